@@ -1,0 +1,40 @@
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace mid {
+
+/** \brief A 128-D SIFT descriptor (OpenCV's layout: L2 norm about 512, values 0..255). */
+using SIFTDescriptor = pcl::Histogram<128>;
+using SIFTDescriptorCloud = pcl::PointCloud<SIFTDescriptor>;
+
+/** \brief Keypoints in 3D: position (metres, camera frame), unit surface normal oriented towards
+  * the camera, and the surface variation of the neighbourhood in `curvature`.
+  */
+using KeypointCloud = pcl::PointCloud<pcl::PointNormal>;
+
+/** \brief Where a keypoint was found in the image (OpenCV's cv::KeyPoint, without OpenCV). */
+struct ImageKeypoint
+{
+  /** \brief Sub-pixel position (column, row). */
+  float u = 0.0f;
+  float v = 0.0f;
+  /** \brief Diameter of the meaningful neighbourhood, in pixels. */
+  float size = 0.0f;
+  /** \brief Orientation in degrees [0, 360). */
+  float angle = 0.0f;
+  /** \brief Detector response (larger is stronger). */
+  float response = 0.0f;
+  /** \brief Pyramid octave the keypoint was detected in (OpenCV's packed value). */
+  std::int32_t octave = 0;
+  /** \brief Index of the pixel (row * width + column) in the organized input cloud. */
+  pcl::index_t pixel_index = 0;
+};
+
+using ImageKeypoints = std::vector<ImageKeypoint>;
+
+} // namespace mid
