@@ -29,6 +29,32 @@ isReadableFile (const std::string& path)
 }
 
 bool
+isEmptyFile (const std::string& path)
+{
+  std::ifstream file (path, std::ios::binary | std::ios::ate);
+  return file.tellg () <= 0;
+}
+
+/** Silences PCL's own console output while it lives: the PCD reader reports problems on several
+  * lines of its own, and this module reports each problem once, in one line, itself.
+  */
+class QuietPCLConsole
+{
+public:
+  QuietPCLConsole () : level_ (pcl::console::getVerbosityLevel ())
+  {
+    pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
+  }
+  ~QuietPCLConsole () { pcl::console::setVerbosityLevel (level_); }
+  QuietPCLConsole (const QuietPCLConsole&) = delete;
+  QuietPCLConsole&
+  operator= (const QuietPCLConsole&) = delete;
+
+private:
+  pcl::console::VERBOSITY_LEVEL level_;
+};
+
+bool
 hasField (const pcl::PCLPointCloud2& header, const std::string& name)
 {
   return std::any_of (header.fields.begin (), header.fields.end (),
@@ -88,13 +114,21 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   if (!isReadableFile (path))
     return fail ("loadOrganizedPCD", "cannot open '" + path + "' (missing or unreadable)", cloud);
 
+  if (isEmptyFile (path))
+    return fail ("loadOrganizedPCD", "'" + path + "' is empty", cloud);
+
   pcl::PCDReader reader;
   pcl::PCLPointCloud2 header;
   Eigen::Vector4f origin;
   Eigen::Quaternionf orientation;
   int version = 0, data_type = 0;
   unsigned int data_index = 0;
-  if (reader.readHeader (path, header, origin, orientation, version, data_type, data_index) < 0)
+  int status = 0;
+  {
+    QuietPCLConsole quiet;
+    status = reader.readHeader (path, header, origin, orientation, version, data_type, data_index);
+  }
+  if (status < 0 || header.fields.empty ())
     return fail ("loadOrganizedPCD", "'" + path + "' is not a valid PCD file (bad header)", cloud);
   if (!hasField (header, "x") || !hasField (header, "y") || !hasField (header, "z"))
     return fail ("loadOrganizedPCD", "'" + path + "' has no x, y, z fields", cloud);
@@ -106,7 +140,11 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
-  if (reader.read (path, cloud) < 0)
+  {
+    QuietPCLConsole quiet;
+    status = reader.read (path, cloud);
+  }
+  if (status < 0)
     return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);
   std::string problem;
