@@ -1,16 +1,18 @@
-// pcl_multi_instance_discovery: discover objects that appear several times in ONE RGB-D frame.
-// This version runs the feature stage: SIFT keypoints with valid depth and normals, and the
-// self-matches between them, printing counts and the time of each step.
+// pcl_multi_instance_discovery: discover the objects that appear several times in ONE RGB-D
+// frame, model them, and localize every instance (Abbeloos et al., 3DV 2017). Prints counts,
+// objects and the time of each stage; -json writes the result (doc/result_format.md).
 
-#include <mid/features/self_matcher.h>
-#include <mid/features/sift_keypoint_extractor.h>
+#include <mid/discovery/multi_instance_discovery.h>
+#include <mid/discovery/result_json.h>
 #include <mid/io/organized_cloud_io.h>
+#include <mid/io/staged_files.h>
 
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/point_types.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -29,20 +31,15 @@ struct Options
   std::string pcd_path;
   std::string color_path;
   std::string depth_path;
+  std::string json_path;
   mid::io::CameraIntrinsics intrinsics;
-  int max_keypoints = 0;
-  double contrast_threshold = 0.04;
-  float normal_radius = 0.015f;
-  float max_descriptor_distance = 200.0f;
-  float min_keypoint_distance = 0.01f;
-  float max_distance_ratio = 1.0f;
-  bool mutual_check = false;
+  mid::DiscoveryParameters parameters;
 };
 
 void
 printHelp (const char* program)
 {
-  const Options defaults;
+  const mid::DiscoveryParameters d;
   print_info ("Discover objects that appear several times in one RGB-D frame.\n\n");
   print_info ("Usage: %s SCENE.pcd [options]\n", program);
   print_info ("   or: %s -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C [options]\n\n",
@@ -52,22 +49,41 @@ printHelp (const char* program)
   print_info ("  -rgb FILE           color image (PNG/JPG), with -depth\n");
   print_info ("  -depth FILE         16-bit depth PNG registered to the color image\n");
   print_info ("  -fx -fy -cx -cy     pinhole intrinsics in pixels (required with -rgb)\n");
-  print_info ("  -depth_scale S      metres per depth unit (default ");
-  print_value ("%g", defaults.intrinsics.depth_scale);
-  print_info (")\n\nFeatures:\n");
-  print_info ("  -max_keypoints N    keep the N strongest keypoints, 0 = all (default ");
-  print_value ("%d", defaults.max_keypoints);
-  print_info (")\n  -contrast T         SIFT contrast threshold (default ");
-  print_value ("%g", defaults.contrast_threshold);
-  print_info (")\n  -normal_radius R    normal neighbourhood radius in metres (default ");
-  print_value ("%g", static_cast<double> (defaults.normal_radius));
-  print_info (")\n  -max_desc_dist D    largest SIFT descriptor distance of a match (default ");
-  print_value ("%g", static_cast<double> (defaults.max_descriptor_distance));
-  print_info (")\n  -min_kp_dist M      skip match candidates closer than M metres (default ");
-  print_value ("%g", static_cast<double> (defaults.min_keypoint_distance));
-  print_info (")\n  -ratio R            Lowe ratio test, 1 = off (default ");
-  print_value ("%g", static_cast<double> (defaults.max_distance_ratio));
-  print_info (")\n  -mutual             keep only mutual best matches\n");
+  print_info ("  -depth_scale S      metres per depth unit (default 0.001)\n");
+  print_info ("Output:\n");
+  print_info ("  -json FILE          write the result as JSON (no window, no display needed)\n");
+  print_info ("Parameters (defaults: Abbeloos et al. 3DV 2017 where the paper gives a value):\n");
+  const auto line = [] (const char* option, const char* meaning, double value) {
+    print_info ("  %-19s %s (default ", option, meaning);
+    print_value ("%g", value);
+    print_info (")\n");
+  };
+  line ("-max_keypoints N", "keep the N strongest keypoints, 0 = all", d.max_keypoints);
+  line ("-contrast T", "SIFT contrast threshold", d.contrast_threshold);
+  line ("-normal_radius R", "keypoint normal radius, metres", static_cast<double> (d.normal_radius));
+  line ("-max_desc_dist D", "largest SIFT descriptor distance of a match",
+        static_cast<double> (d.max_descriptor_distance));
+  line ("-min_kp_dist M", "skip match candidates closer than M metres",
+        static_cast<double> (d.min_keypoint_distance));
+  line ("-ratio R", "Lowe ratio test, 1 = off", static_cast<double> (d.max_distance_ratio));
+  print_info ("  -mutual             keep only mutual best matches\n");
+  line ("-ppf_dist D", "point pair feature distance threshold, metres",
+        static_cast<double> (d.ppf_distance));
+  line ("-ppf_angle A", "point pair feature angle threshold, degrees",
+        static_cast<double> (d.ppf_angle) * 180.0 / M_PI);
+  line ("-min_edge E", "shortest triangle edge, metres", static_cast<double> (d.min_edge_length));
+  line ("-max_edge E", "longest triangle edge, metres", static_cast<double> (d.max_edge_length));
+  line ("-min_angle A", "smallest triangle angle, degrees",
+        static_cast<double> (d.min_triangle_angle) * 180.0 / M_PI);
+  line ("-overlap D", "triangles closer than D overlap, < 0 = off",
+        static_cast<double> (d.overlap_distance));
+  line ("-triplets_per_kp L", "accepted triplets per keypoint", d.triplets_per_keypoint);
+  line ("-eps E", "DBSCAN distance, metres", static_cast<double> (d.cluster_distance));
+  line ("-min_cluster N", "DBSCAN min samples", static_cast<double> (d.min_cluster_size));
+  line ("-inlier D", "RANSAC inlier threshold, metres", static_cast<double> (d.inlier_threshold));
+  line ("-min_inliers N", "RANSAC minimum inliers", static_cast<double> (d.min_inliers));
+  line ("-min_ratio R", "RANSAC minimum inlier ratio", static_cast<double> (d.min_inlier_ratio));
+  line ("-seed S", "seed of every random choice", d.seed);
 }
 
 /** Parse the command line; false (after a one-line error) if it is unusable. */
@@ -101,13 +117,41 @@ parseOptions (int argc, char** argv, Options& options)
   else
     options.pcd_path = argv[pcd_indices.front ()];
 
-  parse_argument (argc, argv, "-max_keypoints", options.max_keypoints);
-  parse_argument (argc, argv, "-contrast", options.contrast_threshold);
-  parse_argument (argc, argv, "-normal_radius", options.normal_radius);
-  parse_argument (argc, argv, "-max_desc_dist", options.max_descriptor_distance);
-  parse_argument (argc, argv, "-min_kp_dist", options.min_keypoint_distance);
-  parse_argument (argc, argv, "-ratio", options.max_distance_ratio);
-  options.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
+  mid::DiscoveryParameters& p = options.parameters;
+  parse_argument (argc, argv, "-json", options.json_path);
+  parse_argument (argc, argv, "-max_keypoints", p.max_keypoints);
+  parse_argument (argc, argv, "-contrast", p.contrast_threshold);
+  parse_argument (argc, argv, "-normal_radius", p.normal_radius);
+  parse_argument (argc, argv, "-max_desc_dist", p.max_descriptor_distance);
+  parse_argument (argc, argv, "-min_kp_dist", p.min_keypoint_distance);
+  parse_argument (argc, argv, "-ratio", p.max_distance_ratio);
+  p.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
+  parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
+  float degrees = 0.0f;
+  if (parse_argument (argc, argv, "-ppf_angle", degrees) >= 0)
+    p.ppf_angle = degrees * static_cast<float> (M_PI / 180.0);
+  parse_argument (argc, argv, "-min_edge", p.min_edge_length);
+  parse_argument (argc, argv, "-max_edge", p.max_edge_length);
+  if (parse_argument (argc, argv, "-min_angle", degrees) >= 0)
+    p.min_triangle_angle = degrees * static_cast<float> (M_PI / 180.0);
+  parse_argument (argc, argv, "-overlap", p.overlap_distance);
+  parse_argument (argc, argv, "-triplets_per_kp", p.triplets_per_keypoint);
+  parse_argument (argc, argv, "-eps", p.cluster_distance);
+  int count = 0;
+  if (parse_argument (argc, argv, "-min_cluster", count) >= 0)
+    p.min_cluster_size = count < 0 ? 0 : static_cast<std::size_t> (count);
+  parse_argument (argc, argv, "-inlier", p.inlier_threshold);
+  if (parse_argument (argc, argv, "-min_inliers", count) >= 0)
+    p.min_inliers = count < 0 ? 0 : static_cast<std::size_t> (count);
+  parse_argument (argc, argv, "-min_ratio", p.min_inlier_ratio);
+  unsigned seed = 0;
+  if (parse_argument (argc, argv, "-seed", seed) >= 0)
+    p.seed = seed;
+  std::string problem;
+  if (!mid::validateDiscoveryParameters (p, problem)) {
+    print_error ("Invalid parameter: %s.\n", problem.c_str ());
+    return false;
+  }
   return true;
 }
 
@@ -133,53 +177,61 @@ main (int argc, char** argv)
   if (!parseOptions (argc, argv, options))
     return 1;
 
-  pcl::StopWatch total;
-  pcl::StopWatch step;
+  pcl::StopWatch watch;
   auto cloud = pcl::make_shared<pcl::PointCloud<PointT>> ();
   if (!loadScene (options, *cloud))
     return 1;
-  const double load_ms = step.getTime ();
+  const double load_ms = watch.getTime ();
 
-  step.reset ();
-  mid::SIFTKeypointExtractor<PointT> extractor;
-  extractor.setInputCloud (cloud);
-  extractor.setMaxKeypoints (options.max_keypoints);
-  extractor.setContrastThreshold (options.contrast_threshold);
-  extractor.setNormalRadius (options.normal_radius);
-  auto keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
-  if (!extractor.compute (*keypoints, *descriptors))
+  // Stage the JSON before the work: a missing or unwritable folder fails now, not after it.
+  mid::io::StagedFiles outputs;
+  std::string json_temporary;
+  if (!options.json_path.empty () && (json_temporary = outputs.stage (options.json_path)).empty ())
     return 1;
-  const double features_ms = step.getTime ();
 
-  step.reset ();
-  mid::SelfMatcher matcher;
-  matcher.setInputKeypoints (keypoints);
-  matcher.setInputDescriptors (descriptors);
-  matcher.setMaxDescriptorDistance (options.max_descriptor_distance);
-  matcher.setMinKeypointDistance (options.min_keypoint_distance);
-  matcher.setMaxDistanceRatio (options.max_distance_ratio);
-  matcher.setMutualCheck (options.mutual_check);
-  pcl::Correspondences matches;
-  if (!matcher.match (matches))
+  mid::MultiInstanceDiscovery<PointT> discovery;
+  discovery.setInputCloud (cloud);
+  discovery.setParameters (options.parameters);
+  mid::DiscoveryResult result;
+  if (!discovery.discover (result))
     return 1;
-  const double matching_ms = step.getTime ();
 
   print_highlight ("Scene: ");
   print_value ("%u x %u", cloud->width, cloud->height);
-  print_info (" points\n");
-  print_info ("keypoints: ");
-  print_value ("%zu", keypoints->size ());
+  print_info (" points\nkeypoints: ");
+  print_value ("%zu", result.keypoints->size ());
   print_info (" (valid depth and normal)\nmatches:   ");
-  print_value ("%zu", matches.size ());
-  print_info ("\ntiming_ms: load ");
-  print_value ("%.1f", load_ms);
-  print_info (", features ");
-  print_value ("%.1f", features_ms);
-  print_info (", matching ");
-  print_value ("%.1f", matching_ms);
-  print_info (", total ");
-  print_value ("%.1f", total.getTime ());
+  print_value ("%zu", result.matches.size ());
+  print_info ("\ntriplets:  ");
+  print_value ("%zu", result.triplets);
+  print_info ("\nclusters:  ");
+  print_value ("%zu", result.clusters);
+  print_info ("\nobjects:   ");
+  print_value ("%zu", result.models.size ());
   print_info ("\n");
+  for (std::size_t m = 0; m < result.models.size (); ++m) {
+    print_info ("  object %zu: ", m);
+    print_value ("%zu", result.models[m].instances.size ());
+    print_info (" instances, %zu landmarks, diameter %.3f m\n", result.models[m].landmarks.size (),
+                static_cast<double> (result.models[m].diameter));
+  }
+  print_info ("timing_ms: load ");
+  print_value ("%.1f", load_ms);
+  for (const auto& [stage, ms] : result.timing_ms) {
+    print_info (", %s ", stage.c_str ());
+    print_value ("%.1f", ms);
+  }
+  print_info ("\n");
+
+  if (!options.json_path.empty ()) {
+    std::ofstream json (json_temporary);
+    json << mid::formatDiscoveryJson (result, options.pcd_path.empty () ? options.color_path
+                                                                        : options.pcd_path);
+    json.close ();
+    if (!json || !outputs.commit ()) {
+      print_error ("Could not write '%s'.\n", options.json_path.c_str ());
+      return 1;
+    }
+  }
   return 0;
 }

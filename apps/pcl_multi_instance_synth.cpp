@@ -2,11 +2,11 @@
 // identical textured objects and a few distractors, with its exact ground truth.
 // Writes scene.pcd, rgb.png, depth.png (16-bit, mm) and ground_truth.json into the output folder.
 
+#include <mid/io/staged_files.h>
 #include <mid/simulation/frame_io.h>
 #include <mid/simulation/ground_truth_json.h>
 #include <mid/simulation/scene_renderer.h>
 #include <mid/simulation/sensor_model.h>
-#include <mid/simulation/staged_files.h>
 #include <mid/simulation/tabletop_scene.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -32,9 +32,6 @@ using pcl::console::print_value;
 
 namespace {
 
-/** Colour rays per pixel along each axis: anti-aliased textures keep SIFT repeatable. */
-constexpr int kSupersampling = 3;
-
 /** Everything the command line sets, with the library's defaults. */
 struct Options
 {
@@ -42,35 +39,50 @@ struct Options
   std::string texture_dir = "data/textures";
   std::string out_dir = ".";
   std::string sensor = "kinect";
+  /** Colour rays per pixel along each axis: anti-aliased textures keep SIFT repeatable. */
+  int supersampling = 3;
 };
 
 /** Options that take a value, and switches. */
-const char* const kValueOptions[] = {"-seed", "-instances", "-distractors", "-texture_dir",
-                                     "-out_dir", "-sensor"};
+const char* const kValueOptions[] = {"-seed",
+                                     "-instances",
+                                     "-distractors",
+                                     "-texture_dir",
+                                     "-out_dir",
+                                     "-sensor",
+                                     "-supersampling"};
 const char* const kSwitches[] = {"-h", "--help"};
 
 void
 printHelp (const char* program)
 {
   const Options defaults;
-  print_info ("Render a synthetic RGB-D frame with several identical objects on a table, and "
-              "its ground truth.\n\n");
+  print_info (
+      "Render a synthetic RGB-D frame with several identical objects on a table, and "
+      "its ground truth.\n\n");
   print_info ("Usage: %s [options]\n\n", program);
-  print_info ("  -seed S             seed of the layout and of the sensor noise (default ");
+  print_info (
+      "  -seed S             seed of the layout and of the sensor noise (default ");
   print_value ("%u", defaults.scene.seed);
   print_info (")\n  -instances N        identical juice cartons, 1 to 10 (default ");
   print_value ("%d", defaults.scene.instances);
   print_info (")\n  -distractors N      objects that appear once, 0 to 2 (default ");
   print_value ("%d", defaults.scene.distractors);
   print_info (")\n  -texture_dir DIR    folder with the textures (default ");
-  print_value ("%s", defaults.texture_dir.c_str ());
+  print_value ("%s", defaults.texture_dir.c_str());
   print_info (")\n  -out_dir DIR        output folder, created if missing (default ");
-  print_value ("%s", defaults.out_dir.c_str ());
-  print_info (")\n  -sensor NAME        kinect (Kinect v1-like noise, holes) or exact (default ");
-  print_value ("%s", defaults.sensor.c_str ());
-  print_info (")\n\nOutput: scene.pcd (organized XYZRGB, binary_compressed, metres), rgb.png, "
-              "depth.png\n(16-bit, millimetres), ground_truth.json (camera, per instance: object, "
-              "4x4 pose model-to-camera, bbox, visible pixels).\n");
+  print_value ("%s", defaults.out_dir.c_str());
+  print_info (")\n  -sensor NAME        kinect (Kinect v1-like noise, holes) or exact "
+              "(default ");
+  print_value ("%s", defaults.sensor.c_str());
+  print_info (")\n  -supersampling N    colour rays per pixel along each axis, 1 to 4 "
+              "(default ");
+  print_value ("%d", defaults.supersampling);
+  print_info (
+      ")\n\nOutput: scene.pcd (organized XYZRGB, binary_compressed, metres), rgb.png, "
+      "depth.png\n(16-bit, millimetres), ground_truth.json (camera, per instance: "
+      "object, "
+      "4x4 pose model-to-camera, bbox, visible pixels).\n");
 }
 
 bool
@@ -86,11 +98,12 @@ isOneOf (const std::string& argument, const char* const* begin, const char* cons
 bool
 toInteger (const std::string& text, long low, long high, long& value)
 {
-  if (text.empty () || (text[0] != '-' && !std::isdigit (static_cast<unsigned char> (text[0]))))
+  if (text.empty() ||
+      (text[0] != '-' && !std::isdigit (static_cast<unsigned char> (text[0]))))
     return false;
   errno = 0;
   char* end = nullptr;
-  value = std::strtol (text.c_str (), &end, 10);
+  value = std::strtol (text.c_str(), &end, 10);
   return errno == 0 && *end == '\0' && value >= low && value <= high;
 }
 
@@ -118,45 +131,57 @@ parseOptions (int argc, char** argv, Options& options)
   long value = 0;
   if (parse_argument (argc, argv, "-seed", text) >= 0) {
     if (!toInteger (text, 0, 4294967295L, value)) {
-      print_error ("-seed must be an integer in [0, 4294967295], got '%s'.\n", text.c_str ());
+      print_error ("-seed must be an integer in [0, 4294967295], got '%s'.\n",
+                   text.c_str());
       return false;
     }
     options.scene.seed = static_cast<std::uint32_t> (value);
   }
   if (parse_argument (argc, argv, "-instances", text) >= 0) {
     if (!toInteger (text, 1, 10, value)) {
-      print_error ("-instances must be an integer in [1, 10], got '%s'.\n", text.c_str ());
+      print_error ("-instances must be an integer in [1, 10], got '%s'.\n",
+                   text.c_str());
       return false;
     }
     options.scene.instances = static_cast<int> (value);
   }
   if (parse_argument (argc, argv, "-distractors", text) >= 0) {
     if (!toInteger (text, 0, 2, value)) {
-      print_error ("-distractors must be an integer in [0, 2], got '%s'.\n", text.c_str ());
+      print_error ("-distractors must be an integer in [0, 2], got '%s'.\n",
+                   text.c_str());
       return false;
     }
     options.scene.distractors = static_cast<int> (value);
+  }
+  if (parse_argument (argc, argv, "-supersampling", text) >= 0) {
+    if (!toInteger (text, 1, 4, value)) {
+      print_error ("-supersampling must be an integer in [1, 4], got '%s'.\n",
+                   text.c_str());
+      return false;
+    }
+    options.supersampling = static_cast<int> (value);
   }
   parse_argument (argc, argv, "-texture_dir", options.texture_dir);
   parse_argument (argc, argv, "-out_dir", options.out_dir);
   parse_argument (argc, argv, "-sensor", options.sensor);
   if (options.sensor != "kinect" && options.sensor != "exact") {
-    print_error ("-sensor must be 'kinect' or 'exact', got '%s'.\n", options.sensor.c_str ());
+    print_error ("-sensor must be 'kinect' or 'exact', got '%s'.\n",
+                 options.sensor.c_str());
     return false;
   }
-  if (options.texture_dir.empty () || options.out_dir.empty ()) {
+  if (options.texture_dir.empty() || options.out_dir.empty()) {
     print_error ("-texture_dir and -out_dir must not be empty.\n");
     return false;
   }
   std::error_code error;
   if (!std::filesystem::is_directory (options.texture_dir, error)) {
     print_error ("The texture folder '%s' does not exist (see -texture_dir).\n",
-                 options.texture_dir.c_str ());
+                 options.texture_dir.c_str());
     return false;
   }
   if (std::filesystem::exists (options.out_dir, error) &&
       !std::filesystem::is_directory (options.out_dir, error)) {
-    print_error ("The output path '%s' is not a folder.\n", options.out_dir.c_str ());
+    print_error ("The output path '%s' is not a folder.\n", options.out_dir.c_str());
     return false;
   }
   return true;
@@ -167,9 +192,9 @@ writeText (const std::string& path, const std::string& text)
 {
   std::ofstream file (path, std::ios::binary | std::ios::trunc);
   file << text;
-  file.close ();
+  file.close();
   if (!file) {
-    print_error ("Cannot write '%s'.\n", path.c_str ());
+    print_error ("Cannot write '%s'.\n", path.c_str());
     return false;
   }
   return true;
@@ -186,7 +211,7 @@ writeImage (const std::string& path, const cv::Mat& image)
     written = false;
   }
   if (!written)
-    print_error ("Cannot write '%s'.\n", path.c_str ());
+    print_error ("Cannot write '%s'.\n", path.c_str());
   return written;
 }
 
@@ -200,29 +225,31 @@ writeOutputs (const Options& options,
   std::error_code error;
   std::filesystem::create_directories (options.out_dir, error);
   if (error || !std::filesystem::is_directory (options.out_dir)) {
-    print_error ("Cannot create the output folder '%s'.\n", options.out_dir.c_str ());
+    print_error ("Cannot create the output folder '%s'.\n", options.out_dir.c_str());
     return false;
   }
   cv::Mat depth_16u;
-  if (!mid::simulation::quantizeDepth (frame.depth, mid::simulation::MILLIMETRE_DEPTH_SCALE,
-                                       depth_16u))
+  if (!mid::simulation::quantizeDepth (
+          frame.depth, mid::simulation::MILLIMETRE_DEPTH_SCALE, depth_16u))
     return false;
   const std::string json = mid::simulation::formatGroundTruthJSON (
-      scene, frame, mid::simulation::MILLIMETRE_DEPTH_SCALE,
+      scene,
+      frame,
+      mid::simulation::MILLIMETRE_DEPTH_SCALE,
       {{"seed", static_cast<double> (options.scene.seed)},
        {"sensor_noise", options.sensor == "kinect" ? 1.0 : 0.0}});
 
   const std::string dir = options.out_dir + "/";
-  mid::simulation::StagedFiles files;
+  mid::io::StagedFiles files;
   if (!writeImage (files.stage (dir + "rgb.png"), frame.color) ||
       !writeImage (files.stage (dir + "depth.png"), depth_16u))
     return false;
   const std::string pcd_path = files.stage (dir + "scene.pcd");
   if (pcl::io::savePCDFileBinaryCompressed (pcd_path, cloud) != 0) {
-    print_error ("Cannot write '%s'.\n", pcd_path.c_str ());
+    print_error ("Cannot write '%s'.\n", pcd_path.c_str());
     return false;
   }
-  return writeText (files.stage (dir + "ground_truth.json"), json) && files.commit ();
+  return writeText (files.stage (dir + "ground_truth.json"), json) && files.commit();
 }
 
 } // namespace
@@ -243,49 +270,53 @@ main (int argc, char** argv)
   mid::simulation::Scene scene;
   if (!mid::simulation::makeTabletopScene (options.scene, options.texture_dir, scene))
     return 1;
-  const double scene_ms = step.getTime ();
+  const double scene_ms = step.getTime();
 
-  step.reset ();
+  step.reset();
   mid::simulation::SceneRenderer renderer;
-  renderer.setSupersampling (kSupersampling);
+  renderer.setSupersampling (options.supersampling);
   mid::simulation::RenderedFrame frame;
   if (!renderer.render (scene, frame))
     return 1;
-  const double render_ms = step.getTime ();
+  const double render_ms = step.getTime();
 
-  step.reset ();
+  step.reset();
   if (options.sensor == "kinect" &&
-      !mid::simulation::applySensorModel (frame, mid::simulation::kinectSensorModel (),
-                                          options.scene.seed, frame))
+      !mid::simulation::applySensorModel (
+          frame, mid::simulation::kinectSensorModel(), options.scene.seed, frame))
     return 1;
   pcl::PointCloud<pcl::PointXYZRGB> cloud;
-  if (!mid::simulation::frameToCloud (frame, mid::simulation::MILLIMETRE_DEPTH_SCALE, cloud))
+  if (!mid::simulation::frameToCloud (
+          frame, mid::simulation::MILLIMETRE_DEPTH_SCALE, cloud))
     return 1;
-  const double sensor_ms = step.getTime ();
+  const double sensor_ms = step.getTime();
 
-  step.reset ();
+  step.reset();
   if (!writeOutputs (options, scene, frame, cloud))
     return 1;
-  const double write_ms = step.getTime ();
+  const double write_ms = step.getTime();
 
   print_highlight ("Scene: ");
-  print_value ("%zu", scene.getObjects ().size ());
+  print_value ("%zu", scene.getObjects().size());
   print_info (" objects (");
   print_value ("%d", options.scene.instances);
   print_info (" identical), seed ");
   print_value ("%u", options.scene.seed);
   print_info (", sensor ");
-  print_value ("%s", options.sensor.c_str ());
+  print_value ("%s", options.sensor.c_str());
   print_info ("\n");
-  for (std::size_t id = 0; id < scene.getObjects ().size (); ++id) {
+  for (std::size_t id = 0; id < scene.getObjects().size(); ++id) {
     const auto& stats = frame.instance_stats[id];
-    print_info ("  %2zu %-14s ", id, scene.getObjects ()[id].shape->getName ().c_str ());
+    print_info ("  %2zu %-14s ", id, scene.getObjects()[id].shape->getName().c_str());
     print_value ("%6d", stats.visible_pixels);
-    print_info (" px, bbox %d %d %d %d\n", stats.bbox.x, stats.bbox.y, stats.bbox.width,
+    print_info (" px, bbox %d %d %d %d\n",
+                stats.bbox.x,
+                stats.bbox.y,
+                stats.bbox.width,
                 stats.bbox.height);
   }
   print_info ("written to ");
-  print_value ("%s", options.out_dir.c_str ());
+  print_value ("%s", options.out_dir.c_str());
   print_info ("\ntiming_ms: scene ");
   print_value ("%.1f", scene_ms);
   print_info (", render ");

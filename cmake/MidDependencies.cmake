@@ -1,4 +1,4 @@
-# Every dependency comes from Debian 12's packages (see scripts/setup.sh). The list of
+# Every dependency comes from Debian 12's packages (see run.sh). The list of
 # components here is repeated in cmake/midConfig.cmake.in for downstream projects.
 set(MID_PCL_COMPONENTS common io features search kdtree registration recognition)
 set(MID_OPENCV_COMPONENTS core imgproc imgcodecs features2d)
@@ -6,3 +6,4 @@ set(MID_OPENCV_COMPONENTS core imgproc imgcodecs features2d)
 find_package(PCL 1.12 REQUIRED COMPONENTS ${MID_PCL_COMPONENTS})
 find_package(OpenCV 4 REQUIRED COMPONENTS ${MID_OPENCV_COMPONENTS})
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(Boost 1.65 REQUIRED)   # header-only: Boost Graph (Dijkstra over the model graph)

@@ -1,5 +1,4 @@
 #include <mid/simulation/box_shape.h>
-
 #include <mid/simulation/texture.h>
 
 #include <algorithm>
@@ -25,20 +24,20 @@ struct FaceFrame
 /** Indexed by BoxShape::Face; right x down is the inward normal, so the image is not mirrored
   * when seen from outside.
   */
-constexpr FaceFrame kFaceFrames[BoxShape::FACE_COUNT] = {
-    {1, 1.0, 2, -1.0},  // POS_X
-    {1, -1.0, 2, -1.0}, // NEG_X
-    {0, -1.0, 2, -1.0}, // POS_Y
-    {0, 1.0, 2, -1.0},  // NEG_Y
-    {0, 1.0, 1, -1.0},  // POS_Z
-    {0, 1.0, 1, 1.0}};  // NEG_Z
+constexpr FaceFrame kFaceFrames[BoxShape::FACE_COUNT] = {{1, 1.0, 2, -1.0},  // POS_X
+                                                         {1, -1.0, 2, -1.0}, // NEG_X
+                                                         {0, -1.0, 2, -1.0}, // POS_Y
+                                                         {0, 1.0, 2, -1.0},  // NEG_Y
+                                                         {0, 1.0, 1, -1.0},  // POS_Z
+                                                         {0, 1.0, 1, 1.0}};  // NEG_Z
 
-const char* const kFaceNames[BoxShape::FACE_COUNT] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+const char* const kFaceNames[BoxShape::FACE_COUNT] = {
+    "+x", "-x", "+y", "-y", "+z", "-z"};
 
 } // namespace
 
 BoxShape::BoxShape (double size_x, double size_y, double size_z)
-  : size_ (size_x, size_y, size_z)
+: size_ (size_x, size_y, size_z)
 {}
 
 void
@@ -58,10 +57,11 @@ BoxShape::setTexture (const cv::Mat& texture)
 bool
 BoxShape::validate (std::string& problem) const
 {
-  problem.clear ();
-  if (!size_.allFinite () || !(size_.minCoeff () > 0.0)) {
-    problem = "box sizes must be finite and positive (got " + std::to_string (size_.x ()) + ", " +
-              std::to_string (size_.y ()) + ", " + std::to_string (size_.z ()) + " m)";
+  problem.clear();
+  if (!size_.allFinite() || !(size_.minCoeff() > 0.0)) {
+    problem = "box sizes must be finite and positive (got " +
+              std::to_string (size_.x()) + ", " + std::to_string (size_.y()) + ", " +
+              std::to_string (size_.z()) + " m)";
     return false;
   }
   for (int face = 0; face < FACE_COUNT; ++face) {
@@ -81,8 +81,8 @@ BoxShape::intersect (const Eigen::Vector3d& origin,
                      SurfaceHit& hit) const
 {
   const Eigen::Vector3d half = 0.5 * size_;
-  double t_enter = -std::numeric_limits<double>::infinity ();
-  double t_exit = std::numeric_limits<double>::infinity ();
+  double t_enter = -std::numeric_limits<double>::infinity();
+  double t_exit = std::numeric_limits<double>::infinity();
   int face = -1;
   for (int axis = 0; axis < 3; ++axis) {
     if (direction[axis] == 0.0) {
@@ -92,8 +92,10 @@ BoxShape::intersect (const Eigen::Vector3d& origin,
     }
     // Slab of this axis: entered through -half when moving towards +, through +half otherwise.
     const bool positive = direction[axis] > 0.0;
-    const double t_near = ((positive ? -half[axis] : half[axis]) - origin[axis]) / direction[axis];
-    const double t_far = ((positive ? half[axis] : -half[axis]) - origin[axis]) / direction[axis];
+    const double t_near =
+        ((positive ? -half[axis] : half[axis]) - origin[axis]) / direction[axis];
+    const double t_far =
+        ((positive ? half[axis] : -half[axis]) - origin[axis]) / direction[axis];
     if (t_near > t_enter) {
       t_enter = t_near;
       face = 2 * axis + (positive ? 1 : 0);
@@ -107,11 +109,12 @@ BoxShape::intersect (const Eigen::Vector3d& origin,
   const int axis = face / 2;
   hit.t = t_enter;
   hit.face = face;
-  hit.normal = Eigen::Vector3d::Zero ();
+  hit.normal = Eigen::Vector3d::Zero();
   hit.normal[axis] = (face % 2 == 0) ? 1.0 : -1.0;
   const FaceFrame& frame = kFaceFrames[face];
-  const double s = (frame.right_sign * point[frame.right_axis] + half[frame.right_axis]) /
-                   size_[frame.right_axis];
+  const double s =
+      (frame.right_sign * point[frame.right_axis] + half[frame.right_axis]) /
+      size_[frame.right_axis];
   const double t = (frame.down_sign * point[frame.down_axis] + half[frame.down_axis]) /
                    size_[frame.down_axis];
   hit.uv = Eigen::Vector2d (std::clamp (s, 0.0, 1.0), std::clamp (t, 0.0, 1.0));
@@ -121,20 +124,20 @@ BoxShape::intersect (const Eigen::Vector3d& origin,
 cv::Vec3f
 BoxShape::getColor (const SurfaceHit& hit) const
 {
-  return sampleBilinear (textures_[hit.face], hit.uv.x (), hit.uv.y ());
+  return sampleBilinear (textures_[hit.face], hit.uv.x(), hit.uv.y());
 }
 
 double
 BoxShape::signedDistance (const Eigen::Vector3d& point) const
 {
-  const Eigen::Vector3d q = point.cwiseAbs () - 0.5 * size_;
-  return q.cwiseMax (0.0).norm () + std::min (q.maxCoeff (), 0.0);
+  const Eigen::Vector3d q = point.cwiseAbs() - 0.5 * size_;
+  return q.cwiseMax (0.0).norm() + std::min (q.maxCoeff(), 0.0);
 }
 
 std::vector<std::pair<std::string, double>>
-BoxShape::getDimensions () const
+BoxShape::getDimensions() const
 {
-  return {{"size_x", size_.x ()}, {"size_y", size_.y ()}, {"size_z", size_.z ()}};
+  return {{"size_x", size_.x()}, {"size_y", size_.y()}, {"size_z", size_.z()}};
 }
 
 } // namespace simulation

@@ -1,5 +1,4 @@
 #include <mid/simulation/cylinder_shape.h>
-
 #include <mid/simulation/texture.h>
 
 #include <algorithm>
@@ -16,7 +15,8 @@ const char* const kFaceNames[CylinderShape::FACE_COUNT] = {"side", "top", "botto
 
 } // namespace
 
-CylinderShape::CylinderShape (double radius, double height) : radius_ (radius), height_ (height)
+CylinderShape::CylinderShape (double radius, double height)
+: radius_ (radius), height_ (height)
 {}
 
 void
@@ -36,7 +36,7 @@ CylinderShape::setTexture (const cv::Mat& texture)
 bool
 CylinderShape::validate (std::string& problem) const
 {
-  problem.clear ();
+  problem.clear();
   if (!std::isfinite (radius_) || !std::isfinite (height_) || !(radius_ > 0.0) ||
       !(height_ > 0.0)) {
     problem = "cylinder radius and height must be finite and positive (got " +
@@ -54,7 +54,7 @@ CylinderShape::validate (std::string& problem) const
 }
 
 double
-CylinderShape::getBoundingRadius () const
+CylinderShape::getBoundingRadius() const
 {
   return std::hypot (radius_, 0.5 * height_);
 }
@@ -70,45 +70,47 @@ CylinderShape::intersect (const Eigen::Vector3d& origin,
   double best = t_max;
 
   // Side: the nearer root of |origin_xy + t direction_xy|^2 = r^2 (numerically stable form).
-  const double a = direction.x () * direction.x () + direction.y () * direction.y ();
+  const double a = direction.x() * direction.x() + direction.y() * direction.y();
   if (a > 0.0) {
-    const double b = origin.x () * direction.x () + origin.y () * direction.y ();
-    const double c = origin.x () * origin.x () + origin.y () * origin.y () - radius_ * radius_;
+    const double b = origin.x() * direction.x() + origin.y() * direction.y();
+    const double c =
+        origin.x() * origin.x() + origin.y() * origin.y() - radius_ * radius_;
     const double discriminant = b * b - a * c;
     if (discriminant >= 0.0) {
       const double q = -(b + std::copysign (std::sqrt (discriminant), b));
       const double root_a = q / a;
       const double root_b = (q != 0.0) ? c / q : root_a;
       const double t = std::min (root_a, root_b);
-      const double z = origin.z () + t * direction.z ();
+      const double z = origin.z() + t * direction.z();
       if (t > 0.0 && t < best && std::abs (z) <= half_height) {
         const Eigen::Vector3d point = origin + t * direction;
         best = t;
         found = true;
         hit.t = t;
         hit.face = SIDE;
-        hit.normal = Eigen::Vector3d (point.x (), point.y (), 0.0).normalized ();
-        const double angle = std::atan2 (point.y (), point.x ());
-        hit.uv = Eigen::Vector2d ((angle + kPi) / (2.0 * kPi),
-                                  std::clamp ((half_height - point.z ()) / height_, 0.0, 1.0));
+        hit.normal = Eigen::Vector3d (point.x(), point.y(), 0.0).normalized();
+        const double angle = std::atan2 (point.y(), point.x());
+        hit.uv = Eigen::Vector2d (
+            (angle + kPi) / (2.0 * kPi),
+            std::clamp ((half_height - point.z()) / height_, 0.0, 1.0));
       }
     }
   }
 
   // Caps, entered from outside: the top when moving down, the bottom when moving up.
-  if (direction.z () != 0.0) {
-    const bool top = direction.z () < 0.0;
-    const double t = ((top ? half_height : -half_height) - origin.z ()) / direction.z ();
+  if (direction.z() != 0.0) {
+    const bool top = direction.z() < 0.0;
+    const double t = ((top ? half_height : -half_height) - origin.z()) / direction.z();
     if (t > 0.0 && t < best) {
       const Eigen::Vector3d point = origin + t * direction;
-      if (point.x () * point.x () + point.y () * point.y () <= radius_ * radius_) {
+      if (point.x() * point.x() + point.y() * point.y() <= radius_ * radius_) {
         found = true;
         hit.t = t;
         hit.face = top ? TOP : BOTTOM;
         hit.normal = Eigen::Vector3d (0.0, 0.0, top ? 1.0 : -1.0);
         const double diameter = 2.0 * radius_;
-        const double s = (point.x () + radius_) / diameter;
-        const double v = ((top ? -point.y () : point.y ()) + radius_) / diameter;
+        const double s = (point.x() + radius_) / diameter;
+        const double v = ((top ? -point.y() : point.y()) + radius_) / diameter;
         hit.uv = Eigen::Vector2d (std::clamp (s, 0.0, 1.0), std::clamp (v, 0.0, 1.0));
       }
     }
@@ -120,22 +122,25 @@ cv::Vec3f
 CylinderShape::getColor (const SurfaceHit& hit) const
 {
   if (hit.face == SIDE)
-    return sampleBilinear (textures_[SIDE], hit.uv.x (), hit.uv.y (), TextureWrap::REPEAT,
+    return sampleBilinear (textures_[SIDE],
+                           hit.uv.x(),
+                           hit.uv.y(),
+                           TextureWrap::REPEAT,
                            TextureWrap::CLAMP);
-  return sampleBilinear (textures_[hit.face], hit.uv.x (), hit.uv.y ());
+  return sampleBilinear (textures_[hit.face], hit.uv.x(), hit.uv.y());
 }
 
 double
 CylinderShape::signedDistance (const Eigen::Vector3d& point) const
 {
-  const double radial = std::hypot (point.x (), point.y ()) - radius_;
-  const double axial = std::abs (point.z ()) - 0.5 * height_;
+  const double radial = std::hypot (point.x(), point.y()) - radius_;
+  const double axial = std::abs (point.z()) - 0.5 * height_;
   const double outside = std::hypot (std::max (radial, 0.0), std::max (axial, 0.0));
   return outside + std::min (std::max (radial, axial), 0.0);
 }
 
 std::vector<std::pair<std::string, double>>
-CylinderShape::getDimensions () const
+CylinderShape::getDimensions() const
 {
   return {{"radius", radius_}, {"height", height_}};
 }

@@ -58,7 +58,7 @@ quoted (const std::string& text)
 std::string
 poseJSON (const Eigen::Isometry3d& pose)
 {
-  const Eigen::Matrix4d matrix = pose.matrix ();
+  const Eigen::Matrix4d matrix = pose.matrix();
   std::string out = "[";
   for (int row = 0; row < 4; ++row) {
     out += row == 0 ? "[" : ", [";
@@ -76,12 +76,13 @@ objectFieldsJSON (const SceneObject& object)
   std::string out;
   if (!object.shape)
     return "\"object\": null, \"pose\": " + poseJSON (object.pose);
-  const std::string& name = object.shape->getName ();
-  out += "\"object\": " + quoted (name.empty () ? object.shape->getTypeName () : name);
-  out += ", \"type\": " + quoted (object.shape->getTypeName ()) + ", \"dimensions\": {";
+  const std::string& name = object.shape->getName();
+  out += "\"object\": " + quoted (name.empty() ? object.shape->getTypeName() : name);
+  out += ", \"type\": " + quoted (object.shape->getTypeName()) + ", \"dimensions\": {";
   bool first = true;
-  for (const auto& dimension : object.shape->getDimensions ()) {
-    out += (first ? "" : ", ") + quoted (dimension.first) + ": " + number (dimension.second);
+  for (const auto& dimension : object.shape->getDimensions()) {
+    out += (first ? "" : ", ") + quoted (dimension.first) + ": " +
+           number (dimension.second);
     first = false;
   }
   return out + "}, \"pose\": " + poseJSON (object.pose);
@@ -97,31 +98,33 @@ formatGroundTruthJSON (const Scene& scene,
 {
   const PinholeCamera& camera = frame.camera;
   std::ostringstream out;
-  out << "{\n  \"camera\": {\"width\": " << camera.width << ", \"height\": " << camera.height
-      << ", \"fx\": " << number (camera.fx) << ", \"fy\": " << number (camera.fy)
-      << ", \"cx\": " << number (camera.cx) << ", \"cy\": " << number (camera.cy) << "},\n";
+  out << "{\n  \"camera\": {\"width\": " << camera.width
+      << ", \"height\": " << camera.height << ", \"fx\": " << number (camera.fx)
+      << ", \"fy\": " << number (camera.fy) << ", \"cx\": " << number (camera.cx)
+      << ", \"cy\": " << number (camera.cy) << "},\n";
   out << "  \"depth_scale\": " << number (depth_scale) << ",\n";
   for (const auto& entry : extra)
     out << "  " << quoted (entry.first) << ": " << number (entry.second) << ",\n";
 
   out << "  \"instances\": [";
-  const auto& objects = scene.getObjects ();
-  for (std::size_t id = 0; id < objects.size (); ++id) {
+  const auto& objects = scene.getObjects();
+  for (std::size_t id = 0; id < objects.size(); ++id) {
     const InstanceStats stats =
-        id < frame.instance_stats.size () ? frame.instance_stats[id] : InstanceStats ();
+        id < frame.instance_stats.size() ? frame.instance_stats[id] : InstanceStats();
     out << (id == 0 ? "\n" : ",\n") << "    {\"id\": " << id << ", "
-        << objectFieldsJSON (objects[id]) << ",\n     \"bbox\": [" << stats.bbox.x << ", "
-        << stats.bbox.y << ", " << stats.bbox.width << ", " << stats.bbox.height
+        << objectFieldsJSON (objects[id]) << ",\n     \"bbox\": [" << stats.bbox.x
+        << ", " << stats.bbox.y << ", " << stats.bbox.width << ", " << stats.bbox.height
         << "], \"visible_pixels\": " << stats.visible_pixels << "}";
   }
-  out << (objects.empty () ? "],\n" : "\n  ],\n");
+  out << (objects.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"background\": [";
-  const auto& background = scene.getBackgroundObjects ();
-  for (std::size_t i = 0; i < background.size (); ++i)
-    out << (i == 0 ? "\n" : ",\n") << "    {" << objectFieldsJSON (background[i]) << "}";
-  out << (background.empty () ? "]\n" : "\n  ]\n") << "}\n";
-  return out.str ();
+  const auto& background = scene.getBackgroundObjects();
+  for (std::size_t i = 0; i < background.size(); ++i)
+    out << (i == 0 ? "\n" : ",\n") << "    {" << objectFieldsJSON (background[i])
+        << "}";
+  out << (background.empty() ? "]\n" : "\n  ]\n") << "}\n";
+  return out.str();
 }
 
 } // namespace simulation

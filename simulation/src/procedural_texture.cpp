@@ -1,6 +1,5 @@
-#include <mid/simulation/procedural_texture.h>
-
 #include <mid/simulation/deterministic_random.h>
+#include <mid/simulation/procedural_texture.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +28,7 @@ addValueNoiseOctave (int width,
   const int grid_y = static_cast<int> (std::ceil (height / spacing_y)) + 2;
   std::vector<double> grid (static_cast<std::size_t> (grid_x) * grid_y);
   for (double& value : grid)
-    value = random.uniform ();
+    value = random.uniform();
   const auto smooth = [] (double w) { return w * w * (3.0 - 2.0 * w); };
   for (int y = 0; y < height; ++y) {
     const double gy = y / spacing_y;
@@ -43,7 +42,8 @@ addValueNoiseOctave (int width,
       const double* bottom = top + grid_x;
       const double upper = top[0] + wx * (top[1] - top[0]);
       const double lower = bottom[0] + wx * (bottom[1] - bottom[0]);
-      noise[static_cast<std::size_t> (y) * width + x] += weight * (upper + wy * (lower - upper));
+      noise[static_cast<std::size_t> (y) * width + x] +=
+          weight * (upper + wy * (lower - upper));
     }
   }
 }
@@ -64,7 +64,7 @@ makeCheckerboardTexture (int squares_x,
                          const cv::Vec3b& second)
 {
   if (squares_x <= 0 || squares_y <= 0 || square_pixels <= 0)
-    return cv::Mat ();
+    return cv::Mat();
   cv::Mat texture (squares_y * square_pixels, squares_x * square_pixels, CV_8UC3);
   for (int y = 0; y < texture.rows; ++y) {
     auto* row = texture.ptr<cv::Vec3b> (y);
@@ -84,25 +84,31 @@ makeNoiseTexture (int width,
                   std::uint32_t seed)
 {
   if (width <= 0 || height <= 0 || !(feature_x > 0.0) || !(feature_y > 0.0))
-    return cv::Mat ();
+    return cv::Mat();
   DeterministicRandom random (seed);
   std::vector<double> noise (static_cast<std::size_t> (width) * height, 0.0);
   double weight = 1.0;
   for (int octave = 0; octave < kNoiseOctaves; ++octave) {
     const double divisor = std::pow (2.0, octave);
-    addValueNoiseOctave (width, height, std::max (1.0, feature_x / divisor),
-                         std::max (1.0, feature_y / divisor), weight, random, noise);
+    addValueNoiseOctave (width,
+                         height,
+                         std::max (1.0, feature_x / divisor),
+                         std::max (1.0, feature_y / divisor),
+                         weight,
+                         random,
+                         noise);
     weight *= 0.5;
   }
   // Stretch to the full [0, 1] range: a sum of octaves clusters around its mean.
-  const auto range = std::minmax_element (noise.begin (), noise.end ());
+  const auto range = std::minmax_element (noise.begin(), noise.end());
   const double low = *range.first;
   const double span = std::max (*range.second - low, 1e-12);
   cv::Mat texture (height, width, CV_8UC3);
   for (int y = 0; y < height; ++y) {
     auto* row = texture.ptr<cv::Vec3b> (y);
     for (int x = 0; x < width; ++x) {
-      const double value = (noise[static_cast<std::size_t> (y) * width + x] - low) / span;
+      const double value =
+          (noise[static_cast<std::size_t> (y) * width + x] - low) / span;
       for (int channel = 0; channel < 3; ++channel)
         row[x][channel] = cv::saturate_cast<std::uint8_t> (
             dark[channel] + value * (light[channel] - dark[channel]));

@@ -7,7 +7,7 @@ int
 Scene::addObject (const Shape::ConstPtr& shape, const Eigen::Isometry3d& pose)
 {
   objects_.push_back ({shape, pose});
-  return static_cast<int> (objects_.size ()) - 1;
+  return static_cast<int> (objects_.size()) - 1;
 }
 
 void
@@ -17,10 +17,10 @@ Scene::addBackgroundObject (const Shape::ConstPtr& shape, const Eigen::Isometry3
 }
 
 void
-Scene::clear ()
+Scene::clear()
 {
-  objects_.clear ();
-  background_.clear ();
+  objects_.clear();
+  background_.clear();
 }
 
 } // namespace simulation

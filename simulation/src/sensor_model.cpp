@@ -1,6 +1,5 @@
-#include <mid/simulation/sensor_model.h>
-
 #include <mid/simulation/deterministic_random.h>
+#include <mid/simulation/sensor_model.h>
 
 #include <opencv2/imgproc.hpp>
 #include <pcl/console/print.h>
@@ -17,8 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 /** One independent random stream per effect, so that switching one effect on or off does not
   * change the numbers the others draw.
   */
-enum RandomStream : std::uint32_t
-{
+enum RandomStream : std::uint32_t {
   DISCONTINUITY_STREAM = 1,
   HOLE_STREAM = 2,
   DROPOUT_STREAM = 3,
@@ -29,8 +27,8 @@ enum RandomStream : std::uint32_t
 bool
 fail (const std::string& message, RenderedFrame& output)
 {
-  PCL_ERROR ("[mid::simulation::applySensorModel] %s\n", message.c_str ());
-  output.clear ();
+  PCL_ERROR ("[mid::simulation::applySensorModel] %s\n", message.c_str());
+  output.clear();
   return false;
 }
 
@@ -46,13 +44,17 @@ checkFrame (const RenderedFrame& frame, bool need_normals, std::string& problem)
   if (!validateCamera (frame.camera, problem))
     return false;
   const cv::Size size (frame.camera.width, frame.camera.height);
-  if (frame.color.type () != CV_8UC3 || frame.color.size () != size)
-    problem = "the frame's colour image is missing or is not 8-bit BGR of the camera's size";
-  else if (frame.depth.type () != CV_32FC1 || frame.depth.size () != size)
-    problem = "the frame's depth image is missing or is not CV_32FC1 of the camera's size";
-  else if (need_normals && (frame.normals.type () != CV_32FC3 || frame.normals.size () != size))
-    problem = "the incidence angle needs the frame's normals (CV_32FC3 of the camera's size)";
-  return problem.empty ();
+  if (frame.color.type() != CV_8UC3 || frame.color.size() != size)
+    problem =
+        "the frame's colour image is missing or is not 8-bit BGR of the camera's size";
+  else if (frame.depth.type() != CV_32FC1 || frame.depth.size() != size)
+    problem =
+        "the frame's depth image is missing or is not CV_32FC1 of the camera's size";
+  else if (need_normals &&
+           (frame.normals.type() != CV_32FC3 || frame.normals.size() != size))
+    problem =
+        "the incidence angle needs the frame's normals (CV_32FC3 of the camera's size)";
+  return problem.empty();
 }
 
 /** Whether depths a and b (0 = none) form a discontinuity; if so, sets which one is farther. */
@@ -77,7 +79,7 @@ void
 removeDiscontinuities (const SensorModel& model, std::uint32_t seed, cv::Mat& depth)
 {
   const double threshold = model.discontinuity_threshold;
-  cv::Mat band = cv::Mat::zeros (depth.size (), CV_8UC1);
+  cv::Mat band = cv::Mat::zeros (depth.size(), CV_8UC1);
   bool first_farther = false;
   for (int v = 0; v < depth.rows; ++v)
     for (int u = 0; u < depth.cols; ++u) {
@@ -92,7 +94,7 @@ removeDiscontinuities (const SensorModel& model, std::uint32_t seed, cv::Mat& de
   // Widen the band onto the same (far) surface only: grow into neighbours of similar depth.
   const int offsets[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (int step = 1; step < model.discontinuity_width; ++step) {
-    cv::Mat grown = band.clone ();
+    cv::Mat grown = band.clone();
     for (int v = 0; v < depth.rows; ++v)
       for (int u = 0; u < depth.cols; ++u) {
         const float z = depth.at<float> (v, u);
@@ -114,7 +116,8 @@ removeDiscontinuities (const SensorModel& model, std::uint32_t seed, cv::Mat& de
   DeterministicRandom random (seed, DISCONTINUITY_STREAM);
   for (int v = 0; v < depth.rows; ++v)
     for (int u = 0; u < depth.cols; ++u)
-      if (band.at<std::uint8_t> (v, u) && random.uniform () < model.discontinuity_dropout)
+      if (band.at<std::uint8_t> (v, u) &&
+          random.uniform() < model.discontinuity_dropout)
         depth.at<float> (v, u) = 0.0f;
 }
 
@@ -130,8 +133,8 @@ removeGrazing (const SensorModel& model, const RenderedFrame& frame, cv::Mat& de
         continue;
       const cv::Vec3f& n = frame.normals.at<cv::Vec3f> (v, u);
       const Eigen::Vector3d ray = pixelRay (frame.camera, u, v);
-      const double cosine = std::abs (n[0] * ray.x () + n[1] * ray.y () + n[2] * ray.z ()) /
-                            ray.norm ();
+      const double cosine =
+          std::abs (n[0] * ray.x() + n[1] * ray.y() + n[2] * ray.z()) / ray.norm();
       if (cosine < min_cosine)
         z = 0.0f;
     }
@@ -146,12 +149,15 @@ punchHoles (const SensorModel& model, std::uint32_t seed, cv::Mat& depth)
     const double center_v = random.uniform (0.0, depth.rows);
     const double radius = random.uniform (1.0, model.hole_max_radius);
     const int v_begin = std::max (0, static_cast<int> (std::floor (center_v - radius)));
-    const int v_end = std::min (depth.rows - 1, static_cast<int> (std::ceil (center_v + radius)));
+    const int v_end =
+        std::min (depth.rows - 1, static_cast<int> (std::ceil (center_v + radius)));
     const int u_begin = std::max (0, static_cast<int> (std::floor (center_u - radius)));
-    const int u_end = std::min (depth.cols - 1, static_cast<int> (std::ceil (center_u + radius)));
+    const int u_end =
+        std::min (depth.cols - 1, static_cast<int> (std::ceil (center_u + radius)));
     for (int v = v_begin; v <= v_end; ++v)
       for (int u = u_begin; u <= u_end; ++u)
-        if ((u - center_u) * (u - center_u) + (v - center_v) * (v - center_v) <= radius * radius)
+        if ((u - center_u) * (u - center_u) + (v - center_v) * (v - center_v) <=
+            radius * radius)
           depth.at<float> (v, u) = 0.0f;
   }
 }
@@ -163,7 +169,7 @@ dropRandomPixels (const SensorModel& model, std::uint32_t seed, cv::Mat& depth)
   for (int v = 0; v < depth.rows; ++v) {
     auto* row = depth.ptr<float> (v);
     for (int u = 0; u < depth.cols; ++u)
-      if (random.uniform () < model.random_dropout)
+      if (random.uniform() < model.random_dropout)
         row[u] = 0.0f;
   }
 }
@@ -180,7 +186,7 @@ perturbDepth (const SensorModel& model, std::uint32_t seed, cv::Mat& depth)
         continue;
       double z = row[u];
       if (model.depth_noise)
-        z += depthNoiseSigma (model, z) * random.normal ();
+        z += depthNoiseSigma (model, z) * random.normal();
       if (z > 0.0 && model.disparity_quantization > 0.0) {
         const double step = model.disparity_quantization;
         const double inverse = std::round (1.0 / z / step) * step;
@@ -197,8 +203,12 @@ void
 perturbColor (const SensorModel& model, std::uint32_t seed, cv::Mat& color)
 {
   if (model.image_blur_sigma > 0.0)
-    cv::GaussianBlur (color, color, cv::Size (0, 0), model.image_blur_sigma,
-                      model.image_blur_sigma, cv::BORDER_REFLECT_101);
+    cv::GaussianBlur (color,
+                      color,
+                      cv::Size (0, 0),
+                      model.image_blur_sigma,
+                      model.image_blur_sigma,
+                      cv::BORDER_REFLECT_101);
   if (model.image_noise_sigma <= 0.0)
     return;
   DeterministicRandom random (seed, IMAGE_NOISE_STREAM);
@@ -207,7 +217,7 @@ perturbColor (const SensorModel& model, std::uint32_t seed, cv::Mat& color)
     for (int u = 0; u < color.cols; ++u)
       for (int channel = 0; channel < 3; ++channel)
         row[u][channel] = cv::saturate_cast<uchar> (
-            row[u][channel] + model.image_noise_sigma * random.normal ());
+            row[u][channel] + model.image_noise_sigma * random.normal());
   }
 }
 
@@ -234,13 +244,19 @@ kinectSensorModel ()
 bool
 validateSensorModel (const SensorModel& model, std::string& problem)
 {
-  problem.clear ();
-  const double values[] = {model.noise_sigma_base,       model.noise_sigma_quadratic,
-                           model.noise_reference_depth,  model.disparity_quantization,
-                           model.depth_quantization,     model.discontinuity_threshold,
-                           model.discontinuity_dropout,  model.max_incidence_angle,
-                           model.hole_max_radius,        model.random_dropout,
-                           model.image_blur_sigma,       model.image_noise_sigma};
+  problem.clear();
+  const double values[] = {model.noise_sigma_base,
+                           model.noise_sigma_quadratic,
+                           model.noise_reference_depth,
+                           model.disparity_quantization,
+                           model.depth_quantization,
+                           model.discontinuity_threshold,
+                           model.discontinuity_dropout,
+                           model.max_incidence_angle,
+                           model.hole_max_radius,
+                           model.random_dropout,
+                           model.image_blur_sigma,
+                           model.image_noise_sigma};
   for (const double value : values)
     if (!std::isfinite (value)) {
       problem = "the sensor model contains a non-finite value";
@@ -254,7 +270,8 @@ validateSensorModel (const SensorModel& model, std::string& problem)
     problem = "the discontinuity threshold must be non-negative (0 = off)";
   else if (model.discontinuity_width < 1)
     problem = "the discontinuity width must be at least 1 pixel";
-  else if (!isProbability (model.discontinuity_dropout) || !isProbability (model.random_dropout))
+  else if (!isProbability (model.discontinuity_dropout) ||
+           !isProbability (model.random_dropout))
     problem = "the dropout probabilities must be in [0, 1]";
   else if (!(model.max_incidence_angle > 0.0))
     problem = "the maximum incidence angle must be positive (90 or more = off)";
@@ -264,7 +281,7 @@ validateSensorModel (const SensorModel& model, std::string& problem)
     problem = "the largest hole radius must be at least 1 pixel when holes are enabled";
   else if (model.image_blur_sigma < 0.0 || model.image_noise_sigma < 0.0)
     problem = "the image blur and noise sigmas must be non-negative (0 = off)";
-  return problem.empty ();
+  return problem.empty();
 }
 
 double
@@ -289,10 +306,10 @@ applySensorModel (const RenderedFrame& input,
 
   RenderedFrame result;
   result.camera = input.camera;
-  result.color = input.color.clone ();
-  result.depth = input.depth.clone ();
-  result.instances = input.instances.clone ();
-  result.normals = input.normals.clone ();
+  result.color = input.color.clone();
+  result.depth = input.depth.clone();
+  result.instances = input.instances.clone();
+  result.normals = input.normals.clone();
   result.instance_stats = input.instance_stats;
 
   if (model.discontinuity_threshold > 0.0)

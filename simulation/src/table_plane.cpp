@@ -1,5 +1,4 @@
 #include <mid/simulation/table_plane.h>
-
 #include <mid/simulation/texture.h>
 
 #include <algorithm>
@@ -32,11 +31,12 @@ TablePlane::setTexture (const cv::Mat& texture)
 bool
 TablePlane::validate (std::string& problem) const
 {
-  problem.clear ();
-  if (!tile_size_.allFinite () || !(tile_size_.minCoeff () > 0.0))
+  problem.clear();
+  if (!tile_size_.allFinite() || !(tile_size_.minCoeff() > 0.0))
     problem = "table tile sizes must be finite and positive (got " +
-              std::to_string (tile_size_.x ()) + ", " + std::to_string (tile_size_.y ()) + " m)";
-  else if (!extent_.allFinite () || extent_.minCoeff () < 0.0)
+              std::to_string (tile_size_.x()) + ", " + std::to_string (tile_size_.y()) +
+              " m)";
+  else if (!extent_.allFinite() || extent_.minCoeff() < 0.0)
     problem = "table extents must be finite and non-negative (0 = infinite)";
   else if (checkTexture (texture_, problem))
     return true;
@@ -46,11 +46,11 @@ TablePlane::validate (std::string& problem) const
 }
 
 double
-TablePlane::getBoundingRadius () const
+TablePlane::getBoundingRadius() const
 {
-  if (extent_.x () > 0.0 && extent_.y () > 0.0)
-    return 0.5 * extent_.norm ();
-  return std::numeric_limits<double>::infinity ();
+  if (extent_.x() > 0.0 && extent_.y() > 0.0)
+    return 0.5 * extent_.norm();
+  return std::numeric_limits<double>::infinity();
 }
 
 bool
@@ -59,48 +59,50 @@ TablePlane::intersect (const Eigen::Vector3d& origin,
                        double t_max,
                        SurfaceHit& hit) const
 {
-  if (direction.z () == 0.0)
+  if (direction.z() == 0.0)
     return false;
-  const double t = -origin.z () / direction.z ();
+  const double t = -origin.z() / direction.z();
   if (!(t > 0.0) || !(t < t_max))
     return false;
-  const double x = origin.x () + t * direction.x ();
-  const double y = origin.y () + t * direction.y ();
-  if ((extent_.x () > 0.0 && std::abs (x) > 0.5 * extent_.x ()) ||
-      (extent_.y () > 0.0 && std::abs (y) > 0.5 * extent_.y ()))
+  const double x = origin.x() + t * direction.x();
+  const double y = origin.y() + t * direction.y();
+  if ((extent_.x() > 0.0 && std::abs (x) > 0.5 * extent_.x()) ||
+      (extent_.y() > 0.0 && std::abs (y) > 0.5 * extent_.y()))
     return false;
   hit.t = t;
   hit.face = 0;
-  hit.normal = Eigen::Vector3d (0.0, 0.0, direction.z () < 0.0 ? 1.0 : -1.0);
-  hit.uv = Eigen::Vector2d (0.5 + x / tile_size_.x (), 0.5 - y / tile_size_.y ());
+  hit.normal = Eigen::Vector3d (0.0, 0.0, direction.z() < 0.0 ? 1.0 : -1.0);
+  hit.uv = Eigen::Vector2d (0.5 + x / tile_size_.x(), 0.5 - y / tile_size_.y());
   return true;
 }
 
 cv::Vec3f
 TablePlane::getColor (const SurfaceHit& hit) const
 {
-  return sampleBilinear (texture_, hit.uv.x (), hit.uv.y (), TextureWrap::REPEAT,
-                         TextureWrap::REPEAT);
+  return sampleBilinear (
+      texture_, hit.uv.x(), hit.uv.y(), TextureWrap::REPEAT, TextureWrap::REPEAT);
 }
 
 double
 TablePlane::signedDistance (const Eigen::Vector3d& point) const
 {
-  const double dx = extent_.x () > 0.0 ? std::max (std::abs (point.x ()) - 0.5 * extent_.x (), 0.0)
-                                       : 0.0;
-  const double dy = extent_.y () > 0.0 ? std::max (std::abs (point.y ()) - 0.5 * extent_.y (), 0.0)
-                                       : 0.0;
-  const double distance = std::sqrt (dx * dx + dy * dy + point.z () * point.z ());
-  return point.z () < 0.0 ? -distance : distance;
+  const double dx = extent_.x() > 0.0
+                        ? std::max (std::abs (point.x()) - 0.5 * extent_.x(), 0.0)
+                        : 0.0;
+  const double dy = extent_.y() > 0.0
+                        ? std::max (std::abs (point.y()) - 0.5 * extent_.y(), 0.0)
+                        : 0.0;
+  const double distance = std::sqrt (dx * dx + dy * dy + point.z() * point.z());
+  return point.z() < 0.0 ? -distance : distance;
 }
 
 std::vector<std::pair<std::string, double>>
-TablePlane::getDimensions () const
+TablePlane::getDimensions() const
 {
-  return {{"size_x", extent_.x ()},
-          {"size_y", extent_.y ()},
-          {"tile_x", tile_size_.x ()},
-          {"tile_y", tile_size_.y ()}};
+  return {{"size_x", extent_.x()},
+          {"size_y", extent_.y()},
+          {"tile_x", tile_size_.x()},
+          {"tile_y", tile_size_.y()}};
 }
 
 } // namespace simulation

@@ -1,10 +1,9 @@
-#include <mid/simulation/tabletop_scene.h>
-
 #include <mid/simulation/box_shape.h>
 #include <mid/simulation/cylinder_shape.h>
 #include <mid/simulation/deterministic_random.h>
 #include <mid/simulation/procedural_texture.h>
 #include <mid/simulation/table_plane.h>
+#include <mid/simulation/tabletop_scene.h>
 #include <mid/simulation/texture.h>
 
 #include <opencv2/core.hpp>
@@ -50,9 +49,9 @@ constexpr std::uint32_t kLayoutStream = 11;
 /** Rotated rectangle an object covers on the table, and the object's height. */
 struct Footprint
 {
-  Eigen::Vector2d center = Eigen::Vector2d::Zero ();
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
   double yaw = 0.0;
-  Eigen::Vector2d half = Eigen::Vector2d::Zero ();
+  Eigen::Vector2d half = Eigen::Vector2d::Zero();
   double height = 0.0;
 };
 
@@ -72,10 +71,10 @@ footprintsOverlap (const Footprint& a, const Footprint& b, double gap)
                                    {-std::sin (b.yaw), std::cos (b.yaw)}};
   const Eigen::Vector2d offset = b.center - a.center;
   for (const Eigen::Vector2d& axis : axes) {
-    const double reach_a = std::abs ((a.half.x () + 0.5 * gap) * axes[0].dot (axis)) +
-                           std::abs ((a.half.y () + 0.5 * gap) * axes[1].dot (axis));
-    const double reach_b = std::abs ((b.half.x () + 0.5 * gap) * axes[2].dot (axis)) +
-                           std::abs ((b.half.y () + 0.5 * gap) * axes[3].dot (axis));
+    const double reach_a = std::abs ((a.half.x() + 0.5 * gap) * axes[0].dot (axis)) +
+                           std::abs ((a.half.y() + 0.5 * gap) * axes[1].dot (axis));
+    const double reach_b = std::abs ((b.half.x() + 0.5 * gap) * axes[2].dot (axis)) +
+                           std::abs ((b.half.y() + 0.5 * gap) * axes[3].dot (axis));
     if (std::abs (offset.dot (axis)) > reach_a + reach_b)
       return false; // separating axis
   }
@@ -88,19 +87,19 @@ footprintAllowed (const Footprint& footprint, const PlacementView& view)
 {
   const double c = std::cos (footprint.yaw), s = std::sin (footprint.yaw);
   for (int corner = 0; corner < 8; ++corner) {
-    const double x = ((corner & 1) ? 1.0 : -1.0) * footprint.half.x ();
-    const double y = ((corner & 2) ? 1.0 : -1.0) * footprint.half.y ();
-    const Eigen::Vector3d point (footprint.center.x () + c * x - s * y,
-                                 footprint.center.y () + s * x + c * y,
+    const double x = ((corner & 1) ? 1.0 : -1.0) * footprint.half.x();
+    const double y = ((corner & 2) ? 1.0 : -1.0) * footprint.half.y();
+    const Eigen::Vector3d point (footprint.center.x() + c * x - s * y,
+                                 footprint.center.y() + s * x + c * y,
                                  (corner & 4) ? footprint.height : 0.0);
-    if (point.x () < kAreaMinX || point.x () > kAreaMaxX || point.y () < kAreaMinY ||
-        point.y () > kAreaMaxY)
+    if (point.x() < kAreaMinX || point.x() > kAreaMaxX || point.y() < kAreaMinY ||
+        point.y() > kAreaMaxY)
       return false;
     Eigen::Vector2d pixel;
     if (!projectPoint (view.camera, view.table_to_camera * point, pixel) ||
-        pixel.x () < kViewMargin || pixel.y () < kViewMargin ||
-        pixel.x () > view.camera.width - 1 - kViewMargin ||
-        pixel.y () > view.camera.height - 1 - kViewMargin)
+        pixel.x() < kViewMargin || pixel.y() < kViewMargin ||
+        pixel.x() > view.camera.width - 1 - kViewMargin ||
+        pixel.y() > view.camera.height - 1 - kViewMargin)
       return false;
   }
   return true;
@@ -140,22 +139,23 @@ layoutFootprints (const std::vector<Footprint>& shapes,
                   DeterministicRandom& random,
                   std::vector<Footprint>& layout)
 {
-  std::vector<std::size_t> order (shapes.size ());
-  for (std::size_t i = 0; i < order.size (); ++i)
+  std::vector<std::size_t> order (shapes.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
-  std::stable_sort (order.begin (), order.end (), [&shapes] (std::size_t a, std::size_t b) {
-    return shapes[a].half.prod () > shapes[b].half.prod ();
-  });
+  std::stable_sort (
+      order.begin(), order.end(), [&shapes] (std::size_t a, std::size_t b) {
+        return shapes[a].half.prod() > shapes[b].half.prod();
+      });
   for (int restart = 0; restart < kMaxLayoutRestarts; ++restart) {
     std::vector<Footprint> placed;
-    layout.assign (shapes.size (), Footprint ());
+    layout.assign (shapes.size(), Footprint());
     bool complete = true;
     for (const std::size_t index : order) {
       if (!placeFootprint (shapes[index], view, random, placed)) {
         complete = false;
         break;
       }
-      layout[index] = placed.back ();
+      layout[index] = placed.back();
     }
     if (complete)
       return true;
@@ -170,15 +170,15 @@ Eigen::Isometry3d
 tableToCamera (double distance, double elevation_deg)
 {
   const double elevation = elevation_deg * kPi / 180.0;
-  const Eigen::Vector3d eye (0.0, -distance * std::cos (elevation),
-                             distance * std::sin (elevation));
-  const Eigen::Vector3d forward = (-eye).normalized ();
-  const Eigen::Vector3d right = forward.cross (Eigen::Vector3d::UnitZ ()).normalized ();
+  const Eigen::Vector3d eye (
+      0.0, -distance * std::cos (elevation), distance * std::sin (elevation));
+  const Eigen::Vector3d forward = (-eye).normalized();
+  const Eigen::Vector3d right = forward.cross (Eigen::Vector3d::UnitZ()).normalized();
   const Eigen::Vector3d down = forward.cross (right);
-  Eigen::Isometry3d camera_to_table = Eigen::Isometry3d::Identity ();
-  camera_to_table.linear () << right, down, forward;
-  camera_to_table.translation () = eye;
-  return camera_to_table.inverse ();
+  Eigen::Isometry3d camera_to_table = Eigen::Isometry3d::Identity();
+  camera_to_table.linear() << right, down, forward;
+  camera_to_table.translation() = eye;
+  return camera_to_table.inverse();
 }
 
 /** The label centred on a canvas of its border colour, as wide as aspect times its height:
@@ -187,20 +187,25 @@ tableToCamera (double distance, double elevation_deg)
 cv::Mat
 makeLabelTexture (const cv::Mat& label, double aspect)
 {
-  const int width = std::max (label.cols, static_cast<int> (std::lround (aspect * label.rows)));
-  const cv::Scalar border = cv::mean (label.colRange (0, 1)) * 0.5 +
-                            cv::mean (label.colRange (label.cols - 1, label.cols)) * 0.5;
+  const int width =
+      std::max (label.cols, static_cast<int> (std::lround (aspect * label.rows)));
+  const cv::Scalar border =
+      cv::mean (label.colRange (0, 1)) * 0.5 +
+      cv::mean (label.colRange (label.cols - 1, label.cols)) * 0.5;
   cv::Mat canvas (label.rows, width, CV_8UC3, border);
-  label.copyTo (canvas.colRange ((width - label.cols) / 2, (width - label.cols) / 2 + label.cols));
+  label.copyTo (canvas.colRange ((width - label.cols) / 2,
+                                 (width - label.cols) / 2 + label.cols));
   return canvas;
 }
 
 bool
 loadTextures (const std::string& texture_dir, std::vector<cv::Mat>& textures)
 {
-  const char* const names[] = {TABLETOP_CARTON_FRONT_TEXTURE, TABLETOP_CARTON_BACK_TEXTURE,
-                               TABLETOP_COOKIE_BOX_TEXTURE, TABLETOP_CAN_LABEL_TEXTURE};
-  textures.clear ();
+  const char* const names[] = {TABLETOP_CARTON_FRONT_TEXTURE,
+                               TABLETOP_CARTON_BACK_TEXTURE,
+                               TABLETOP_COOKIE_BOX_TEXTURE,
+                               TABLETOP_CAN_LABEL_TEXTURE};
+  textures.clear();
   for (const char* name : names) {
     cv::Mat texture;
     if (!loadTexture (texture_dir + "/" + name, texture))
@@ -213,25 +218,36 @@ loadTextures (const std::string& texture_dir, std::vector<cv::Mat>& textures)
 BoxShape::Ptr
 makeCarton (const cv::Mat& front, const cv::Mat& back)
 {
-  auto carton = std::make_shared<BoxShape> (kCartonSize.x (), kCartonSize.y (), kCartonSize.z ());
+  auto carton =
+      std::make_shared<BoxShape> (kCartonSize.x(), kCartonSize.y(), kCartonSize.z());
   carton->setName ("juice_carton");
   carton->setTexture (makeUniformTexture (cv::Vec3b (225, 230, 232)));
   carton->setFaceTexture (BoxShape::NEG_Y, front);
   carton->setFaceTexture (BoxShape::POS_Y, back);
-  carton->setFaceTexture (BoxShape::POS_X, makeNoiseTexture (120, 343, 24.0, 24.0,
-                                                             cv::Vec3b (40, 120, 50),
-                                                             cv::Vec3b (215, 235, 235), 101));
-  carton->setFaceTexture (BoxShape::NEG_X, makeNoiseTexture (120, 343, 24.0, 24.0,
-                                                             cv::Vec3b (20, 80, 190),
-                                                             cv::Vec3b (210, 230, 240), 102));
+  carton->setFaceTexture (BoxShape::POS_X,
+                          makeNoiseTexture (120,
+                                            343,
+                                            24.0,
+                                            24.0,
+                                            cv::Vec3b (40, 120, 50),
+                                            cv::Vec3b (215, 235, 235),
+                                            101));
+  carton->setFaceTexture (BoxShape::NEG_X,
+                          makeNoiseTexture (120,
+                                            343,
+                                            24.0,
+                                            24.0,
+                                            cv::Vec3b (20, 80, 190),
+                                            cv::Vec3b (210, 230, 240),
+                                            102));
   return carton;
 }
 
 BoxShape::Ptr
 makeCookieBox (const cv::Mat& top)
 {
-  auto box = std::make_shared<BoxShape> (kCookieBoxSize.x (), kCookieBoxSize.y (),
-                                         kCookieBoxSize.z ());
+  auto box = std::make_shared<BoxShape> (
+      kCookieBoxSize.x(), kCookieBoxSize.y(), kCookieBoxSize.z());
   box->setName ("cookie_box");
   box->setTexture (makeUniformTexture (cv::Vec3b (120, 150, 175)));
   box->setFaceTexture (BoxShape::POS_Z, top);
@@ -255,8 +271,13 @@ makeTable (std::uint32_t seed)
   auto table = std::make_shared<TablePlane> (kTableSizeX, kTableSizeY);
   table->setName ("table");
   table->setExtent (kTableSizeX, kTableSizeY);
-  table->setTexture (makeNoiseTexture (1024, 768, 200.0, 24.0, cv::Vec3b (40, 75, 120),
-                                       cv::Vec3b (120, 170, 215), seed));
+  table->setTexture (makeNoiseTexture (1024,
+                                       768,
+                                       200.0,
+                                       24.0,
+                                       cv::Vec3b (40, 75, 120),
+                                       cv::Vec3b (120, 170, 215),
+                                       seed));
   return table;
 }
 
@@ -264,17 +285,18 @@ makeTable (std::uint32_t seed)
 Eigen::Isometry3d
 restingPose (const Footprint& footprint, double z, const Eigen::Matrix3d& orientation)
 {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
-  pose.linear () = Eigen::AngleAxisd (footprint.yaw, Eigen::Vector3d::UnitZ ()) * orientation;
-  pose.translation () = Eigen::Vector3d (footprint.center.x (), footprint.center.y (), z);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() =
+      Eigen::AngleAxisd (footprint.yaw, Eigen::Vector3d::UnitZ()) * orientation;
+  pose.translation() = Eigen::Vector3d (footprint.center.x(), footprint.center.y(), z);
   return pose;
 }
 
 bool
 fail (const std::string& message, Scene& scene)
 {
-  PCL_ERROR ("[mid::simulation::makeTabletopScene] %s\n", message.c_str ());
-  scene.clear ();
+  PCL_ERROR ("[mid::simulation::makeTabletopScene] %s\n", message.c_str());
+  scene.clear();
   return false;
 }
 
@@ -285,10 +307,11 @@ makeTabletopScene (const TabletopSceneOptions& options,
                    const std::string& texture_dir,
                    Scene& scene)
 {
-  scene.clear ();
+  scene.clear();
   if (options.instances < 1 || options.instances > kMaxInstances)
-    return fail ("the number of instances must be in [1, " + std::to_string (kMaxInstances) +
-                     "], got " + std::to_string (options.instances),
+    return fail ("the number of instances must be in [1, " +
+                     std::to_string (kMaxInstances) + "], got " +
+                     std::to_string (options.instances),
                  scene);
   if (options.distractors < 0 || options.distractors > 2)
     return fail ("the number of distractors must be in [0, 2], got " +
@@ -299,8 +322,9 @@ makeTabletopScene (const TabletopSceneOptions& options,
     return fail (problem, scene);
   if (!(options.camera_distance >= 0.4 && options.camera_distance <= 3.0) ||
       !(options.camera_elevation >= 20.0 && options.camera_elevation <= 90.0))
-    return fail ("the camera distance must be in [0.4, 3] m and its elevation in [20, 90] deg",
-                 scene);
+    return fail (
+        "the camera distance must be in [0.4, 3] m and its elevation in [20, 90] deg",
+        scene);
   std::vector<cv::Mat> textures;
   if (!loadTextures (texture_dir, textures))
     return fail ("cannot read the textures in '" + texture_dir + "'", scene);
@@ -308,28 +332,30 @@ makeTabletopScene (const TabletopSceneOptions& options,
   // Footprints: the cartons (long axis along the footprint's x), then the distractors.
   std::vector<Footprint> shapes (options.instances);
   for (Footprint& shape : shapes) {
-    shape.half = Eigen::Vector2d (0.5 * kCartonSize.z (), 0.5 * kCartonSize.x ());
-    shape.height = kCartonSize.x ();
+    shape.half = Eigen::Vector2d (0.5 * kCartonSize.z(), 0.5 * kCartonSize.x());
+    shape.height = kCartonSize.x();
   }
   if (options.distractors >= 1) {
-    shapes.emplace_back ();
-    shapes.back ().half = Eigen::Vector2d (0.5 * kCookieBoxSize.x (), 0.5 * kCookieBoxSize.y ());
-    shapes.back ().height = kCookieBoxSize.z ();
+    shapes.emplace_back();
+    shapes.back().half =
+        Eigen::Vector2d (0.5 * kCookieBoxSize.x(), 0.5 * kCookieBoxSize.y());
+    shapes.back().height = kCookieBoxSize.z();
   }
   if (options.distractors >= 2) {
-    shapes.emplace_back ();
-    shapes.back ().half = Eigen::Vector2d (kCanRadius, kCanRadius);
-    shapes.back ().height = kCanHeight;
+    shapes.emplace_back();
+    shapes.back().half = Eigen::Vector2d (kCanRadius, kCanRadius);
+    shapes.back().height = kCanHeight;
   }
   const Eigen::Isometry3d table_to_camera =
       tableToCamera (options.camera_distance, options.camera_elevation);
-  const PlacementView view {options.camera, table_to_camera};
+  const PlacementView view{options.camera, table_to_camera};
   DeterministicRandom random (options.seed, kLayoutStream);
   std::vector<Footprint> placed;
   if (!layoutFootprints (shapes, view, random, placed))
-    return fail ("cannot place " + std::to_string (shapes.size ()) +
-                     " objects on the table in view without contact; use fewer instances",
-                 scene);
+    return fail (
+        "cannot place " + std::to_string (shapes.size()) +
+            " objects on the table in view without contact; use fewer instances",
+        scene);
   std::vector<int> spins;
   for (int i = 0; i < options.instances; ++i)
     spins.push_back (random.uniformInt (4));
@@ -337,24 +363,27 @@ makeTabletopScene (const TabletopSceneOptions& options,
   for (int i = 0; i < options.instances; ++i) {
     // Long axis (model z) along the footprint's x; spinning about it picks the face that is up.
     const Eigen::Matrix3d lying =
-        Eigen::AngleAxisd (0.5 * kPi, Eigen::Vector3d::UnitY ()).toRotationMatrix () *
-        Eigen::AngleAxisd (0.5 * kPi * spins[i], Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
-    scene.addObject (carton, table_to_camera *
-                                 restingPose (placed[i], 0.5 * kCartonSize.x (), lying));
+        Eigen::AngleAxisd (0.5 * kPi, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+        Eigen::AngleAxisd (0.5 * kPi * spins[i], Eigen::Vector3d::UnitZ())
+            .toRotationMatrix();
+    scene.addObject (carton,
+                     table_to_camera *
+                         restingPose (placed[i], 0.5 * kCartonSize.x(), lying));
   }
   if (options.distractors >= 1)
     scene.addObject (makeCookieBox (textures[2]),
                      table_to_camera * restingPose (placed[options.instances],
-                                                    0.5 * kCookieBoxSize.z (),
-                                                    Eigen::Matrix3d::Identity ()));
+                                                    0.5 * kCookieBoxSize.z(),
+                                                    Eigen::Matrix3d::Identity()));
   if (options.distractors >= 2) {
     // The label (model +x) turned roughly towards the camera (table -y); a circle fits its
     // square footprint whatever the heading.
     Footprint can = placed[options.instances + 1];
     can.yaw = -0.5 * kPi + random.uniform (-0.6, 0.6);
     scene.addObject (makeCan (textures[3]),
-                     table_to_camera *
-                         restingPose (can, 0.5 * kCanHeight, Eigen::Matrix3d::Identity ()));
+                     table_to_camera * restingPose (can,
+                                                    0.5 * kCanHeight,
+                                                    Eigen::Matrix3d::Identity()));
   }
   scene.addBackgroundObject (makeTable (options.seed), table_to_camera);
   return true;

@@ -29,11 +29,11 @@ cv::Mat
 toTexture (const cv::Mat& image)
 {
   cv::Mat texture;
-  if (image.empty ())
+  if (image.empty())
     return texture;
-  if (image.type () == CV_8UC1)
+  if (image.type() == CV_8UC1)
     cv::cvtColor (image, texture, cv::COLOR_GRAY2BGR);
-  else if (image.type () == CV_8UC4)
+  else if (image.type() == CV_8UC4)
     cv::cvtColor (image, texture, cv::COLOR_BGRA2BGR);
   else
     texture = image;
@@ -43,33 +43,36 @@ toTexture (const cv::Mat& image)
 bool
 checkTexture (const cv::Mat& texture, std::string& problem)
 {
-  problem.clear ();
-  if (texture.empty ())
+  problem.clear();
+  if (texture.empty())
     problem = "the texture is empty";
-  else if (texture.type () != CV_8UC3)
+  else if (texture.type() != CV_8UC3)
     problem = "the texture must be an 8-bit, 3-channel BGR image (CV_8UC3)";
-  return problem.empty ();
+  return problem.empty();
 }
 
 bool
 loadTexture (const std::string& path, cv::Mat& texture)
 {
-  texture.release ();
-  if (!std::ifstream (path, std::ios::binary).good ()) {
-    PCL_ERROR ("[mid::simulation::loadTexture] cannot open '%s' (missing or unreadable)\n",
-               path.c_str ());
+  texture.release();
+  if (!std::ifstream (path, std::ios::binary).good()) {
+    PCL_ERROR (
+        "[mid::simulation::loadTexture] cannot open '%s' (missing or unreadable)\n",
+        path.c_str());
     return false;
   }
   texture = cv::imread (path, cv::IMREAD_COLOR);
-  if (texture.empty ()) {
-    PCL_ERROR ("[mid::simulation::loadTexture] '%s' is not a readable image\n", path.c_str ());
+  if (texture.empty()) {
+    PCL_ERROR ("[mid::simulation::loadTexture] '%s' is not a readable image\n",
+               path.c_str());
     return false;
   }
   return true;
 }
 
 cv::Vec3f
-sampleBilinear (const cv::Mat& texture, double s, double t, TextureWrap wrap_s, TextureWrap wrap_t)
+sampleBilinear (
+    const cv::Mat& texture, double s, double t, TextureWrap wrap_s, TextureWrap wrap_t)
 {
   const double x = s * texture.cols - 0.5;
   const double y = t * texture.rows - 0.5;
@@ -88,7 +91,8 @@ sampleBilinear (const cv::Mat& texture, double s, double t, TextureWrap wrap_s, 
   cv::Vec3f color;
   for (int channel = 0; channel < 3; ++channel) {
     const float top = row0[c0][channel] + wx * (row0[c1][channel] - row0[c0][channel]);
-    const float bottom = row1[c0][channel] + wx * (row1[c1][channel] - row1[c0][channel]);
+    const float bottom =
+        row1[c0][channel] + wx * (row1[c1][channel] - row1[c0][channel]);
     color[channel] = top + wy * (bottom - top);
   }
   return color;

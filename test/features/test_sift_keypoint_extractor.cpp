@@ -55,7 +55,8 @@ TEST (SIFTKeypointExtractor, LiftsKeypointsOntoTheSurfaceWithCameraFacingNormals
   }
   // The wall is untextured; the two copies hold (nearly) the same keypoints.
   EXPECT_EQ (in_a + in_b, keypoints.size ());
-  EXPECT_NEAR (static_cast<double> (in_a), static_cast<double> (in_b), 0.15 * in_a);
+  EXPECT_NEAR (static_cast<double> (in_a), static_cast<double> (in_b),
+               0.15 * static_cast<double> (in_a));
 }
 
 TEST (SIFTKeypointExtractor, KeepsOnlyKeypointsWithValidDepth)

@@ -24,7 +24,8 @@ RenderedFrame
 makeFilledFrame ()
 {
   Scene scene;
-  scene.addObject (makeColoredBox (0.1, 0.1, 0.1), makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
+  scene.addObject (makeColoredBox (0.1, 0.1, 0.1),
+                   makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
   SceneRenderer renderer;
   RenderedFrame frame;
   EXPECT_TRUE (renderer.render (scene, frame));
@@ -34,19 +35,20 @@ makeFilledFrame ()
 bool
 isCleared (const RenderedFrame& frame)
 {
-  return frame.color.empty () && frame.depth.empty () && frame.instances.empty () &&
-         frame.normals.empty () && frame.instance_stats.empty ();
+  return frame.color.empty() && frame.depth.empty() && frame.instances.empty() &&
+         frame.normals.empty() && frame.instance_stats.empty();
 }
 
 /** Render a scene holding only the given object; expect failure and cleared output. */
 void
-expectRenderFails (const Shape::ConstPtr& shape,
-                   const Eigen::Isometry3d& pose = makePose (Eigen::Vector3d (0.0, 0.0, 1.0)))
+expectRenderFails (
+    const Shape::ConstPtr& shape,
+    const Eigen::Isometry3d& pose = makePose (Eigen::Vector3d (0.0, 0.0, 1.0)))
 {
   Scene scene;
   scene.addObject (shape, pose);
   SceneRenderer renderer;
-  RenderedFrame frame = makeFilledFrame ();
+  RenderedFrame frame = makeFilledFrame();
   EXPECT_FALSE (renderer.render (scene, frame));
   EXPECT_TRUE (isCleared (frame));
 }
@@ -56,7 +58,7 @@ expectRenderFails (const Shape::ConstPtr& shape,
 TEST (SimulationBadInput, EmptyOrWrongTextureIsRefused)
 {
   auto box = makeColoredBox (0.1, 0.1, 0.1);
-  box->setFaceTexture (BoxShape::POS_Y, cv::Mat ());
+  box->setFaceTexture (BoxShape::POS_Y, cv::Mat());
   expectRenderFails (box);
   box->setFaceTexture (BoxShape::POS_Y, cv::Mat (4, 4, CV_32FC3));
   expectRenderFails (box);
@@ -73,7 +75,8 @@ TEST (SimulationBadInput, NonPositiveSizesAreRefused)
 {
   expectRenderFails (makeColoredBox (0.1, 0.0, 0.1));
   expectRenderFails (makeColoredBox (-0.1, 0.1, 0.1));
-  expectRenderFails (makeColoredBox (0.1, 0.1, std::numeric_limits<double>::quiet_NaN ()));
+  expectRenderFails (
+      makeColoredBox (0.1, 0.1, std::numeric_limits<double>::quiet_NaN()));
   auto can = std::make_shared<CylinderShape> (0.0, 0.1);
   can->setTexture (makeUniformTexture (cv::Vec3b (1, 2, 3)));
   expectRenderFails (can);
@@ -91,20 +94,21 @@ TEST (SimulationBadInput, NonPositiveSizesAreRefused)
 TEST (SimulationBadInput, BadCameraPoseOrParametersAreRefused)
 {
   Scene scene;
-  scene.addObject (makeColoredBox (0.1, 0.1, 0.1), makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
+  scene.addObject (makeColoredBox (0.1, 0.1, 0.1),
+                   makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
   SceneRenderer renderer;
-  RenderedFrame frame = makeFilledFrame ();
+  RenderedFrame frame = makeFilledFrame();
 
   PinholeCamera camera;
   camera.width = 0;
   renderer.setCamera (camera);
   EXPECT_FALSE (renderer.render (scene, frame));
   EXPECT_TRUE (isCleared (frame));
-  camera = PinholeCamera ();
+  camera = PinholeCamera();
   camera.fy = 0.0;
   renderer.setCamera (camera);
   EXPECT_FALSE (renderer.render (scene, frame));
-  renderer.setCamera (PinholeCamera ());
+  renderer.setCamera (PinholeCamera());
 
   renderer.setAmbient (1.5);
   EXPECT_FALSE (renderer.render (scene, frame));
@@ -112,55 +116,55 @@ TEST (SimulationBadInput, BadCameraPoseOrParametersAreRefused)
   renderer.setSupersampling (0);
   EXPECT_FALSE (renderer.render (scene, frame));
   renderer.setSupersampling (1);
-  renderer.setLightDirection (Eigen::Vector3d::Zero ());
+  renderer.setLightDirection (Eigen::Vector3d::Zero());
   EXPECT_FALSE (renderer.render (scene, frame));
-  renderer.setLightDirection (Eigen::Vector3d::UnitZ ());
+  renderer.setLightDirection (Eigen::Vector3d::UnitZ());
   EXPECT_TRUE (renderer.render (scene, frame));
 
   // A scaled (non-rigid) pose, and a missing shape.
   Eigen::Isometry3d scaled = makePose (Eigen::Vector3d (0.0, 0.0, 1.0));
-  scaled.linear () *= 2.0;
+  scaled.linear() *= 2.0;
   expectRenderFails (makeColoredBox (0.1, 0.1, 0.1), scaled);
   expectRenderFails (nullptr);
 }
 
 TEST (SimulationBadInput, SensorModelAndFrameChecks)
 {
-  const RenderedFrame exact = makeFilledFrame ();
-  RenderedFrame output = makeFilledFrame ();
+  const RenderedFrame exact = makeFilledFrame();
+  RenderedFrame output = makeFilledFrame();
   SensorModel model;
   model.noise_sigma_base = -1.0;
   EXPECT_FALSE (applySensorModel (exact, model, 1, output));
   EXPECT_TRUE (isCleared (output));
-  model = SensorModel ();
+  model = SensorModel();
   model.random_dropout = 2.0;
   EXPECT_FALSE (applySensorModel (exact, model, 1, output));
-  model = SensorModel ();
+  model = SensorModel();
   model.hole_count = 3; // radius left at 0
   EXPECT_FALSE (applySensorModel (exact, model, 1, output));
-  model = SensorModel ();
-  model.image_blur_sigma = std::numeric_limits<double>::infinity ();
+  model = SensorModel();
+  model.image_blur_sigma = std::numeric_limits<double>::infinity();
   EXPECT_FALSE (applySensorModel (exact, model, 1, output));
   std::string problem;
-  EXPECT_TRUE (validateSensorModel (kinectSensorModel (), problem)) << problem;
+  EXPECT_TRUE (validateSensorModel (kinectSensorModel(), problem)) << problem;
 
   // An empty frame, and the incidence angle without normals.
-  EXPECT_FALSE (applySensorModel (RenderedFrame (), SensorModel (), 1, output));
+  EXPECT_FALSE (applySensorModel (RenderedFrame(), SensorModel(), 1, output));
   RenderedFrame no_normals = exact;
-  no_normals.normals.release ();
-  model = SensorModel ();
+  no_normals.normals.release();
+  model = SensorModel();
   model.max_incidence_angle = 70.0;
   EXPECT_FALSE (applySensorModel (no_normals, model, 1, output));
 
   pcl::PointCloud<pcl::PointXYZRGB> cloud;
   cloud.resize (3);
-  EXPECT_FALSE (frameToCloud (RenderedFrame (), 0.001, cloud));
-  EXPECT_TRUE (cloud.empty ());
+  EXPECT_FALSE (frameToCloud (RenderedFrame(), 0.001, cloud));
+  EXPECT_TRUE (cloud.empty());
   EXPECT_FALSE (frameToCloud (exact, -1.0, cloud));
   // A frame without any depth has no usable point.
   Scene empty;
   RenderedFrame nothing;
-  ASSERT_TRUE (SceneRenderer ().render (empty, nothing));
+  ASSERT_TRUE (SceneRenderer().render (empty, nothing));
   EXPECT_FALSE (frameToCloud (nothing, 0.001, cloud));
 }
 
@@ -168,13 +172,14 @@ TEST (SimulationBadInput, MissingTexturesAndBadRecipes)
 {
   cv::Mat texture (2, 2, CV_8UC3);
   EXPECT_FALSE (loadTexture ("/nonexistent/texture.png", texture));
-  EXPECT_TRUE (texture.empty ());
+  EXPECT_TRUE (texture.empty());
 
   Scene scene;
-  scene.addObject (makeColoredBox (0.1, 0.1, 0.1), makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
+  scene.addObject (makeColoredBox (0.1, 0.1, 0.1),
+                   makePose (Eigen::Vector3d (0.0, 0.0, 1.0)));
   TabletopSceneOptions options;
   EXPECT_FALSE (makeTabletopScene (options, "/nonexistent", scene));
-  EXPECT_TRUE (scene.getObjects ().empty ());
+  EXPECT_TRUE (scene.getObjects().empty());
   const std::string textures = std::string (MID_TEST_DATA_DIR) + "/textures";
   options.instances = 0;
   EXPECT_FALSE (makeTabletopScene (options, textures, scene));
@@ -186,5 +191,5 @@ TEST (SimulationBadInput, MissingTexturesAndBadRecipes)
   options.distractors = 2;
   options.camera_distance = 0.0;
   EXPECT_FALSE (makeTabletopScene (options, textures, scene));
-  EXPECT_TRUE (scene.getObjects ().empty ());
+  EXPECT_TRUE (scene.getObjects().empty());
 }

@@ -3,7 +3,6 @@
 #include <mid/simulation/frame_io.h>
 #include <mid/simulation/ground_truth_json.h>
 #include <mid/simulation/scene_renderer.h>
-#include <mid/simulation/staged_files.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -36,9 +35,10 @@ renderBox ()
   BoxScene result;
   result.box = makeColoredBox (0.15, 0.1, 0.07);
   result.box->setName ("test \"box\"");
-  result.pose = makePose (Eigen::Vector3d (0.03, -0.02, 0.8), 0.9, Eigen::Vector3d (1, 1, 0));
+  result.pose =
+      makePose (Eigen::Vector3d (0.03, -0.02, 0.8), 0.9, Eigen::Vector3d (1, 1, 0));
   result.scene.addObject (result.box, result.pose);
-  result.scene.addBackgroundObject (makeFacingPlane (), facingPlanePose (1.2));
+  result.scene.addBackgroundObject (makeFacingPlane(), facingPlanePose (1.2));
   SceneRenderer renderer;
   EXPECT_TRUE (renderer.render (result.scene, result.frame));
   return result;
@@ -48,7 +48,7 @@ renderBox ()
 std::filesystem::path
 makeEmptyFolder (const std::string& name)
 {
-  const std::filesystem::path folder = std::filesystem::current_path () / name;
+  const std::filesystem::path folder = std::filesystem::current_path() / name;
   std::filesystem::remove_all (folder);
   std::filesystem::create_directories (folder);
   return folder;
@@ -59,7 +59,7 @@ countEntries (const std::filesystem::path& folder)
 {
   std::size_t count = 0;
   for (const auto& entry : std::filesystem::directory_iterator (folder)) {
-    (void) entry;
+    (void)entry;
     ++count;
   }
   return count;
@@ -69,11 +69,15 @@ countEntries (const std::filesystem::path& folder)
 
 TEST (SimulationFrameIO, QuantizeDepthRoundsAndDropsWhatCannotBeStored)
 {
-  cv::Mat depth = (cv::Mat_<float> (1, 6) << 0.0f, 0.4004f, 1.2346f, -1.0f, 70.0f,
-                   std::numeric_limits<float>::quiet_NaN ());
+  cv::Mat depth = (cv::Mat_<float> (1, 6) << 0.0f,
+                   0.4004f,
+                   1.2346f,
+                   -1.0f,
+                   70.0f,
+                   std::numeric_limits<float>::quiet_NaN());
   cv::Mat depth_16u;
   ASSERT_TRUE (quantizeDepth (depth, MILLIMETRE_DEPTH_SCALE, depth_16u));
-  ASSERT_EQ (depth_16u.type (), CV_16UC1);
+  ASSERT_EQ (depth_16u.type(), CV_16UC1);
   EXPECT_EQ (depth_16u.at<std::uint16_t> (0, 0), 0);
   EXPECT_EQ (depth_16u.at<std::uint16_t> (0, 1), 400);
   EXPECT_EQ (depth_16u.at<std::uint16_t> (0, 2), 1235);
@@ -81,19 +85,20 @@ TEST (SimulationFrameIO, QuantizeDepthRoundsAndDropsWhatCannotBeStored)
   EXPECT_EQ (depth_16u.at<std::uint16_t> (0, 4), 0); // beyond 65.535 m
   EXPECT_EQ (depth_16u.at<std::uint16_t> (0, 5), 0);
   EXPECT_FALSE (quantizeDepth (depth, 0.0, depth_16u));
-  EXPECT_TRUE (depth_16u.empty ());
+  EXPECT_TRUE (depth_16u.empty());
   EXPECT_FALSE (quantizeDepth (cv::Mat (2, 2, CV_16UC1), 0.001, depth_16u));
 }
 
 TEST (SimulationFrameIO, CloudPointsLieOnTheSurfaceWithinTheQuantization)
 {
-  const BoxScene data = renderBox ();
-  const double scale = 0.00002; // 20 micrometres: 1.31 m of range, enough for this scene
+  const BoxScene data = renderBox();
+  const double scale =
+      0.00002; // 20 micrometres: 1.31 m of range, enough for this scene
   pcl::PointCloud<pcl::PointXYZRGB> cloud;
   ASSERT_TRUE (frameToCloud (data.frame, scale, cloud));
   ASSERT_EQ (cloud.width, 640u);
   ASSERT_EQ (cloud.height, 480u);
-  const Eigen::Isometry3d camera_to_model = data.pose.inverse ();
+  const Eigen::Isometry3d camera_to_model = data.pose.inverse();
   int on_box = 0;
   for (int v = 0; v < 480; ++v)
     for (int u = 0; u < 640; ++u) {
@@ -116,91 +121,69 @@ TEST (SimulationFrameIO, CloudPointsLieOnTheSurfaceWithinTheQuantization)
 
 TEST (SimulationFrameIO, CloudInMillimetresMatchesTheWrittenPngPair)
 {
-  const BoxScene data = renderBox ();
+  const BoxScene data = renderBox();
   pcl::PointCloud<pcl::PointXYZRGBA> cloud;
   ASSERT_TRUE (frameToCloud (data.frame, MILLIMETRE_DEPTH_SCALE, cloud));
   const std::filesystem::path folder = makeEmptyFolder ("frame_io_png");
-  const std::string color_path = (folder / "rgb.png").string ();
-  const std::string depth_path = (folder / "depth.png").string ();
+  const std::string color_path = (folder / "rgb.png").string();
+  const std::string depth_path = (folder / "depth.png").string();
   ASSERT_TRUE (writeFrameImages (data.frame, color_path, depth_path));
   EXPECT_EQ (countEntries (folder), 2u); // no temporary file left
   const cv::Mat color = cv::imread (color_path, cv::IMREAD_UNCHANGED);
   const cv::Mat depth = cv::imread (depth_path, cv::IMREAD_UNCHANGED);
-  ASSERT_EQ (color.type (), CV_8UC3);
-  ASSERT_EQ (depth.type (), CV_16UC1);
+  ASSERT_EQ (color.type(), CV_8UC3);
+  ASSERT_EQ (depth.type(), CV_16UC1);
   EXPECT_EQ (cv::norm (color, data.frame.color, cv::NORM_INF), 0.0);
   for (int v = 0; v < 480; v += 5)
     for (int u = 0; u < 640; u += 5) {
       const std::uint16_t millimetres = depth.at<std::uint16_t> (v, u);
-      EXPECT_EQ (millimetres, static_cast<std::uint16_t> (
-                                  std::lround (data.frame.depth.at<float> (v, u) * 1000.0)));
+      EXPECT_EQ (millimetres,
+                 static_cast<std::uint16_t> (
+                     std::lround (data.frame.depth.at<float> (v, u) * 1000.0)));
       EXPECT_FLOAT_EQ (cloud.at (u, v).z, static_cast<float> (millimetres * 0.001));
     }
 }
 
 TEST (SimulationFrameIO, FailedWriteLeavesNoFile)
 {
-  const BoxScene data = renderBox ();
+  const BoxScene data = renderBox();
   const std::filesystem::path folder = makeEmptyFolder ("frame_io_failure");
   // The depth file must be a PNG: nothing at all is written.
-  EXPECT_FALSE (writeFrameImages (data.frame, (folder / "rgb.png").string (),
-                                  (folder / "depth.jpg").string ()));
+  EXPECT_FALSE (writeFrameImages (
+      data.frame, (folder / "rgb.png").string(), (folder / "depth.jpg").string()));
   // An unknown colour extension makes the first write fail.
-  EXPECT_FALSE (writeFrameImages (data.frame, (folder / "rgb.unknown").string (),
-                                  (folder / "depth.png").string ()));
+  EXPECT_FALSE (writeFrameImages (
+      data.frame, (folder / "rgb.unknown").string(), (folder / "depth.png").string()));
   EXPECT_EQ (countEntries (folder), 0u);
-}
-
-TEST (SimulationFrameIO, StagedFilesAppearOnlyOnCommit)
-{
-  const std::filesystem::path folder = makeEmptyFolder ("staged_files");
-  const std::string final_path = (folder / "a.txt").string ();
-  {
-    StagedFiles files;
-    const std::string temporary = files.stage (final_path);
-    EXPECT_EQ (std::filesystem::path (temporary).extension (), ".txt");
-    std::ofstream (temporary) << "first";
-    EXPECT_FALSE (std::filesystem::exists (final_path));
-  } // not committed: removed
-  EXPECT_EQ (countEntries (folder), 0u);
-
-  StagedFiles files;
-  std::ofstream (files.stage (final_path)) << "second";
-  const std::string missing = files.stage ((folder / "b.txt").string ());
-  (void) missing; // never written: commit refuses and cleans up
-  EXPECT_FALSE (files.commit ());
-  EXPECT_EQ (countEntries (folder), 0u);
-
-  std::ofstream (files.stage (final_path)) << "third";
-  ASSERT_TRUE (files.commit ());
-  std::ifstream file (final_path);
-  std::string text;
-  file >> text;
-  EXPECT_EQ (text, "third");
-  EXPECT_EQ (countEntries (folder), 1u);
 }
 
 TEST (SimulationFrameIO, GroundTruthJsonHoldsCameraPosesAndStatistics)
 {
-  const BoxScene data = renderBox ();
-  const std::string json = formatGroundTruthJSON (data.scene, data.frame, 0.001, {{"seed", 42}});
-  EXPECT_NE (json.find ("\"camera\": {\"width\": 640, \"height\": 480, \"fx\": 538, \"fy\": 538, "
-                        "\"cx\": 319.5, \"cy\": 239.5}"),
-             std::string::npos)
+  const BoxScene data = renderBox();
+  const std::string json =
+      formatGroundTruthJSON (data.scene, data.frame, 0.001, {{"seed", 42}});
+  EXPECT_NE (
+      json.find (
+          "\"camera\": {\"width\": 640, \"height\": 480, \"fx\": 538, \"fy\": 538, "
+          "\"cx\": 319.5, \"cy\": 239.5}"),
+      std::string::npos)
       << json;
   EXPECT_NE (json.find ("\"depth_scale\": 0.001"), std::string::npos);
   EXPECT_NE (json.find ("\"seed\": 42"), std::string::npos);
-  EXPECT_NE (json.find ("\"object\": \"test \\\"box\\\"\", \"type\": \"box\""), std::string::npos)
+  EXPECT_NE (json.find ("\"object\": \"test \\\"box\\\"\", \"type\": \"box\""),
+             std::string::npos)
       << json;
-  EXPECT_NE (json.find ("\"dimensions\": {\"size_x\": 0.15, \"size_y\": 0.1, \"size_z\": 0.07}"),
-             std::string::npos);
+  EXPECT_NE (
+      json.find (
+          "\"dimensions\": {\"size_x\": 0.15, \"size_y\": 0.1, \"size_z\": 0.07}"),
+      std::string::npos);
   EXPECT_NE (json.find ("\"visible_pixels\": " +
                         std::to_string (data.frame.instance_stats[0].visible_pixels)),
              std::string::npos);
   const cv::Rect& bbox = data.frame.instance_stats[0].bbox;
-  EXPECT_NE (json.find ("\"bbox\": [" + std::to_string (bbox.x) + ", " + std::to_string (bbox.y) +
-                        ", " + std::to_string (bbox.width) + ", " +
-                        std::to_string (bbox.height) + "]"),
+  EXPECT_NE (json.find ("\"bbox\": [" + std::to_string (bbox.x) + ", " +
+                        std::to_string (bbox.y) + ", " + std::to_string (bbox.width) +
+                        ", " + std::to_string (bbox.height) + "]"),
              std::string::npos);
   EXPECT_NE (json.find ("\"type\": \"table_plane\""), std::string::npos);
   // The translation is the last column of the pose.

@@ -24,7 +24,7 @@ renderBoxBeforeWall ()
   Scene scene;
   scene.addObject (makeColoredBox (0.2, 0.15, 0.1),
                    makePose (Eigen::Vector3d (0.0, 0.0, 0.75), 0.3));
-  scene.addBackgroundObject (makeFacingPlane (), facingPlanePose (1.0));
+  scene.addBackgroundObject (makeFacingPlane(), facingPlanePose (1.0));
   SceneRenderer renderer;
   RenderedFrame frame;
   EXPECT_TRUE (renderer.render (scene, frame));
@@ -36,7 +36,7 @@ RenderedFrame
 renderWall (double z)
 {
   Scene scene;
-  scene.addBackgroundObject (makeFacingPlane (), facingPlanePose (z));
+  scene.addBackgroundObject (makeFacingPlane(), facingPlanePose (z));
   SceneRenderer renderer;
   RenderedFrame frame;
   EXPECT_TRUE (renderer.render (scene, frame));
@@ -53,9 +53,9 @@ maxDifference (const cv::Mat& a, const cv::Mat& b)
 
 TEST (SimulationSensor, DefaultModelIsExact)
 {
-  const RenderedFrame exact = renderBoxBeforeWall ();
+  const RenderedFrame exact = renderBoxBeforeWall();
   RenderedFrame measured;
-  ASSERT_TRUE (applySensorModel (exact, SensorModel (), 3, measured));
+  ASSERT_TRUE (applySensorModel (exact, SensorModel(), 3, measured));
   EXPECT_EQ (maxDifference (exact.depth, measured.depth), 0.0);
   EXPECT_EQ (maxDifference (exact.color, measured.color), 0.0);
   EXPECT_EQ (maxDifference (exact.instances, measured.instances), 0.0);
@@ -63,24 +63,26 @@ TEST (SimulationSensor, DefaultModelIsExact)
 
 TEST (SimulationSensor, SameSeedIsBitIdenticalOtherSeedDiffers)
 {
-  const RenderedFrame exact = renderBoxBeforeWall ();
-  const SensorModel kinect = kinectSensorModel ();
+  const RenderedFrame exact = renderBoxBeforeWall();
+  const SensorModel kinect = kinectSensorModel();
   RenderedFrame a, b, c;
   ASSERT_TRUE (applySensorModel (exact, kinect, 7, a));
   ASSERT_TRUE (applySensorModel (exact, kinect, 7, b));
   ASSERT_TRUE (applySensorModel (exact, kinect, 8, c));
-  EXPECT_EQ (std::memcmp (a.depth.data, b.depth.data, a.depth.total () * sizeof (float)), 0);
-  EXPECT_EQ (std::memcmp (a.color.data, b.color.data, a.color.total () * 3), 0);
+  EXPECT_EQ (std::memcmp (a.depth.data, b.depth.data, a.depth.total() * sizeof (float)),
+             0);
+  EXPECT_EQ (std::memcmp (a.color.data, b.color.data, a.color.total() * 3), 0);
   EXPECT_GT (maxDifference (a.depth, c.depth), 0.0);
   EXPECT_GT (maxDifference (a.color, c.color), 0.0);
   // Ground truth is untouched.
   EXPECT_EQ (maxDifference (a.instances, exact.instances), 0.0);
-  EXPECT_EQ (a.instance_stats[0].visible_pixels, exact.instance_stats[0].visible_pixels);
+  EXPECT_EQ (a.instance_stats[0].visible_pixels,
+             exact.instance_stats[0].visible_pixels);
 
   // In place gives the same result.
   RenderedFrame in_place = exact;
-  in_place.depth = exact.depth.clone ();
-  in_place.color = exact.color.clone ();
+  in_place.depth = exact.depth.clone();
+  in_place.color = exact.color.clone();
   ASSERT_TRUE (applySensorModel (in_place, kinect, 7, in_place));
   EXPECT_EQ (maxDifference (a.depth, in_place.depth), 0.0);
   EXPECT_EQ (maxDifference (a.color, in_place.color), 0.0);
@@ -99,7 +101,8 @@ TEST (SimulationSensor, DepthNoiseFollowsSigmaOfZ)
     for (int v = 0; v < exact.depth.rows; ++v)
       for (int u = 0; u < exact.depth.cols; ++u) {
         ASSERT_GT (measured.depth.at<float> (v, u), 0.0f);
-        const double error = measured.depth.at<float> (v, u) - exact.depth.at<float> (v, u);
+        const double error =
+            measured.depth.at<float> (v, u) - exact.depth.at<float> (v, u);
         sum += error;
         sum_squared += error * error;
         ++count;
@@ -117,9 +120,9 @@ TEST (SimulationSensor, DepthVanishesBeyondTheMaximumIncidenceAngle)
 {
   Scene scene;
   // A wall turned 70 deg about y: incidence goes from about 40 to 100 deg across the image.
-  scene.addBackgroundObject (makeFacingPlane (),
+  scene.addBackgroundObject (makeFacingPlane(),
                              facingPlanePose (1.0) *
-                                 Eigen::AngleAxisd (1.22, Eigen::Vector3d::UnitY ()));
+                                 Eigen::AngleAxisd (1.22, Eigen::Vector3d::UnitY()));
   SceneRenderer renderer;
   RenderedFrame exact, measured;
   ASSERT_TRUE (renderer.render (scene, exact));
@@ -133,8 +136,8 @@ TEST (SimulationSensor, DepthVanishesBeyondTheMaximumIncidenceAngle)
       if (exact.depth.at<float> (v, u) == 0.0f)
         continue;
       const cv::Vec3f n = exact.normals.at<cv::Vec3f> (v, u);
-      const Eigen::Vector3d ray = pixelRay (exact.camera, u, v).normalized ();
-      const double cosine = std::abs (n[0] * ray.x () + n[1] * ray.y () + n[2] * ray.z ());
+      const Eigen::Vector3d ray = pixelRay (exact.camera, u, v).normalized();
+      const double cosine = std::abs (n[0] * ray.x() + n[1] * ray.y() + n[2] * ray.z());
       if (std::abs (cosine - limit) < 1e-4)
         continue; // on the border
       const bool should_keep = cosine > limit;
@@ -147,7 +150,7 @@ TEST (SimulationSensor, DepthVanishesBeyondTheMaximumIncidenceAngle)
 
 TEST (SimulationSensor, DiscontinuitiesLoseTheFarSide)
 {
-  const RenderedFrame exact = renderBoxBeforeWall ();
+  const RenderedFrame exact = renderBoxBeforeWall();
   SensorModel model;
   model.discontinuity_threshold = 0.05;
   RenderedFrame measured;
@@ -164,7 +167,8 @@ TEST (SimulationSensor, DiscontinuitiesLoseTheFarSide)
                                exact.instances.at<int> (v, u + 1) == 0 ||
                                exact.instances.at<int> (v - 1, u) == 0 ||
                                exact.instances.at<int> (v + 1, u) == 0;
-      ASSERT_EQ (measured.depth.at<float> (v, u) == 0.0f, next_to_box) << u << ", " << v;
+      ASSERT_EQ (measured.depth.at<float> (v, u) == 0.0f, next_to_box)
+          << u << ", " << v;
       removed += next_to_box ? 1 : 0;
     }
   EXPECT_GT (removed, 300);
@@ -180,7 +184,7 @@ TEST (SimulationSensor, DiscontinuitiesLoseTheFarSide)
 
 TEST (SimulationSensor, QuantizationAndDropout)
 {
-  const RenderedFrame exact = renderBoxBeforeWall ();
+  const RenderedFrame exact = renderBoxBeforeWall();
   SensorModel model;
   model.disparity_quantization = 0.003;
   RenderedFrame measured;
@@ -192,16 +196,17 @@ TEST (SimulationSensor, QuantizationAndDropout)
       const double steps = 1.0 / z / 0.003;
       EXPECT_NEAR (steps, std::round (steps), 1e-3);
       // The step at 1 m is z^2 * 0.003 = 3 mm: the error is at most half of it.
-      EXPECT_LE (std::abs (z - exact.depth.at<float> (v, u)), 0.5 * 0.003 * z * z * 1.01);
+      EXPECT_LE (std::abs (z - exact.depth.at<float> (v, u)),
+                 0.5 * 0.003 * z * z * 1.01);
     }
 
-  model = SensorModel ();
+  model = SensorModel();
   model.random_dropout = 0.1;
   ASSERT_TRUE (applySensorModel (exact, model, 1, measured));
   const double fraction = cv::countNonZero (measured.depth == 0) / (640.0 * 480.0);
   EXPECT_NEAR (fraction, 0.1, 0.005);
 
-  model = SensorModel ();
+  model = SensorModel();
   model.hole_count = 10;
   model.hole_max_radius = 8.0;
   ASSERT_TRUE (applySensorModel (exact, model, 1, measured));
@@ -212,19 +217,20 @@ TEST (SimulationSensor, QuantizationAndDropout)
 
 TEST (SimulationSensor, ImageBlurAndNoise)
 {
-  const RenderedFrame exact = renderBoxBeforeWall ();
+  const RenderedFrame exact = renderBoxBeforeWall();
   SensorModel model;
   model.image_noise_sigma = 3.0;
   RenderedFrame measured;
   ASSERT_TRUE (applySensorModel (exact, model, 1, measured));
   cv::Mat difference;
-  cv::subtract (measured.color, exact.color, difference, cv::noArray (), CV_32F);
+  cv::subtract (measured.color, exact.color, difference, cv::noArray(), CV_32F);
   cv::Scalar mean, stddev;
   cv::meanStdDev (difference.reshape (1), mean, stddev);
-  EXPECT_NEAR (stddev[0], 3.0, 0.2); // a little less: saturation at 0 and 255 is rare here
+  EXPECT_NEAR (
+      stddev[0], 3.0, 0.2); // a little less: saturation at 0 and 255 is rare here
   EXPECT_EQ (maxDifference (exact.depth, measured.depth), 0.0);
 
-  model = SensorModel ();
+  model = SensorModel();
   model.image_blur_sigma = 1.0;
   ASSERT_TRUE (applySensorModel (exact, model, 1, measured));
   EXPECT_GT (maxDifference (exact.color, measured.color), 0.0);

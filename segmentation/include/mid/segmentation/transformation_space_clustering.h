@@ -3,7 +3,7 @@
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/triplet_match.h>
-#include <mid/segmentation/triplet_cluster.h>
+#include <mid/registration/triplet_cluster.h>
 
 #include <pcl/recognition/cg/correspondence_grouping.h>
 

@@ -30,15 +30,7 @@ public:
   using ConstPtr = std::shared_ptr<const BoxShape>;
 
   /** \brief The faces, named by their outward normal. */
-  enum Face
-  {
-    POS_X = 0,
-    NEG_X = 1,
-    POS_Y = 2,
-    NEG_Y = 3,
-    POS_Z = 4,
-    NEG_Z = 5
-  };
+  enum Face { POS_X = 0, NEG_X = 1, POS_Y = 2, NEG_Y = 3, POS_Z = 4, NEG_Z = 5 };
   /** \brief Number of faces. */
   static constexpr int FACE_COUNT = 6;
 
@@ -47,28 +39,43 @@ public:
 
   /** \brief Edge lengths along the model x, y and z axes, in metres (all must be positive). */
   void
-  setSize (const Eigen::Vector3d& size) { size_ = size; }
+  setSize (const Eigen::Vector3d& size)
+  {
+    size_ = size;
+  }
   const Eigen::Vector3d&
-  getSize () const { return size_; }
+  getSize () const
+  {
+    return size_;
+  }
 
   /** \brief Texture of one face (converted with toTexture()). */
   void
   setFaceTexture (Face face, const cv::Mat& texture);
   const cv::Mat&
-  getFaceTexture (Face face) const { return textures_[face]; }
+  getFaceTexture (Face face) const
+  {
+    return textures_[face];
+  }
 
   /** \brief The same texture on all six faces. */
   void
   setTexture (const cv::Mat& texture);
 
   std::string
-  getTypeName () const override { return "box"; }
+  getTypeName () const override
+  {
+    return "box";
+  }
 
   bool
   validate (std::string& problem) const override;
 
   double
-  getBoundingRadius () const override { return 0.5 * size_.norm (); }
+  getBoundingRadius () const override
+  {
+    return 0.5 * size_.norm();
+  }
 
   bool
   intersect (const Eigen::Vector3d& origin,

@@ -23,12 +23,7 @@ public:
   using ConstPtr = std::shared_ptr<const CylinderShape>;
 
   /** \brief The textured faces. */
-  enum Face
-  {
-    SIDE = 0,
-    TOP = 1,
-    BOTTOM = 2
-  };
+  enum Face { SIDE = 0, TOP = 1, BOTTOM = 2 };
   /** \brief Number of faces. */
   static constexpr int FACE_COUNT = 3;
 
@@ -37,28 +32,46 @@ public:
 
   /** \brief Radius in metres (must be positive). */
   void
-  setRadius (double radius) { radius_ = radius; }
+  setRadius (double radius)
+  {
+    radius_ = radius;
+  }
   double
-  getRadius () const { return radius_; }
+  getRadius () const
+  {
+    return radius_;
+  }
 
   /** \brief Height along the model z axis in metres (must be positive). */
   void
-  setHeight (double height) { height_ = height; }
+  setHeight (double height)
+  {
+    height_ = height;
+  }
   double
-  getHeight () const { return height_; }
+  getHeight () const
+  {
+    return height_;
+  }
 
   /** \brief Texture of one face (converted with toTexture()). */
   void
   setFaceTexture (Face face, const cv::Mat& texture);
   const cv::Mat&
-  getFaceTexture (Face face) const { return textures_[face]; }
+  getFaceTexture (Face face) const
+  {
+    return textures_[face];
+  }
 
   /** \brief The same texture on the side and both caps. */
   void
   setTexture (const cv::Mat& texture);
 
   std::string
-  getTypeName () const override { return "cylinder"; }
+  getTypeName () const override
+  {
+    return "cylinder";
+  }
 
   bool
   validate (std::string& problem) const override;

@@ -38,7 +38,9 @@ quantizeDepth (const cv::Mat& depth, double depth_scale, cv::Mat& depth_16u);
   */
 template <typename PointT>
 bool
-frameToCloud (const RenderedFrame& frame, double depth_scale, pcl::PointCloud<PointT>& cloud);
+frameToCloud (const RenderedFrame& frame,
+              double depth_scale,
+              pcl::PointCloud<PointT>& cloud);
 
 /** \brief Write the colour image (PNG or JPG, by extension) and the 16-bit depth PNG of a frame
   * (units of depth_scale metres). Each file is written under a temporary name and renamed into

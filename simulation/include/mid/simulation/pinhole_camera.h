@@ -52,7 +52,9 @@ toCameraIntrinsics (const PinholeCamera& camera, double depth_scale);
   * \return false if the point is not in front of the camera (z <= 0); pixel is then unchanged
   */
 bool
-projectPoint (const PinholeCamera& camera, const Eigen::Vector3d& point, Eigen::Vector2d& pixel);
+projectPoint (const PinholeCamera& camera,
+              const Eigen::Vector3d& point,
+              Eigen::Vector2d& pixel);
 
 /** \brief The ray through a pixel, scaled so that its z component is 1: a point at depth z
   * on it is z * ray, which makes the ray parameter of a hit equal to its depth.

@@ -46,11 +46,11 @@ struct RenderedFrame
   void
   clear ()
   {
-    color.release ();
-    depth.release ();
-    instances.release ();
-    normals.release ();
-    instance_stats.clear ();
+    color.release();
+    depth.release();
+    instances.release();
+    normals.release();
+    instance_stats.clear();
   }
 };
 

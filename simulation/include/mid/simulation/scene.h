@@ -17,7 +17,7 @@ struct SceneObject
   /** \brief Rigid transform from the shape's model frame to the camera frame (OpenCV
     * convention: x right, y down, z forward), in metres.
     */
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
 };
 
 /** \brief What the SceneRenderer draws: the objects (the instances whose ground truth is
@@ -37,7 +37,10 @@ public:
 
   /** \brief The objects, indexed by instance id. */
   const std::vector<SceneObject>&
-  getObjects () const { return objects_; }
+  getObjects () const
+  {
+    return objects_;
+  }
 
   /** \brief Add a background object (a table, a wall): rendered, but labelled -1 and given no
     * instance statistics.
@@ -49,13 +52,22 @@ public:
 
   /** \brief The background objects, in the order they were added. */
   const std::vector<SceneObject>&
-  getBackgroundObjects () const { return background_; }
+  getBackgroundObjects () const
+  {
+    return background_;
+  }
 
   /** \brief BGR colour of pixels whose ray hits nothing. Default: dark grey (40, 40, 40). */
   void
-  setBackgroundColor (const cv::Vec3b& color) { background_color_ = color; }
+  setBackgroundColor (const cv::Vec3b& color)
+  {
+    background_color_ = color;
+  }
   const cv::Vec3b&
-  getBackgroundColor () const { return background_color_; }
+  getBackgroundColor () const
+  {
+    return background_color_;
+  }
 
   /** \brief Remove all objects and background objects (the background colour stays). */
   void

@@ -25,34 +25,58 @@ class SceneRenderer
 public:
   /** \brief The camera. Default: PinholeCamera (), VGA Kinect-like. */
   void
-  setCamera (const PinholeCamera& camera) { camera_ = camera; }
+  setCamera (const PinholeCamera& camera)
+  {
+    camera_ = camera;
+  }
   const PinholeCamera&
-  getCamera () const { return camera_; }
+  getCamera () const
+  {
+    return camera_;
+  }
 
   /** \brief Direction towards the (distant) light, in the camera frame; normalized when
     * rendering, must be non-zero. Default: (0.2, -0.8, -0.6), above and behind the camera.
     */
   void
-  setLightDirection (const Eigen::Vector3d& direction) { light_direction_ = direction; }
+  setLightDirection (const Eigen::Vector3d& direction)
+  {
+    light_direction_ = direction;
+  }
   const Eigen::Vector3d&
-  getLightDirection () const { return light_direction_; }
+  getLightDirection () const
+  {
+    return light_direction_;
+  }
 
   /** \brief Ambient share of the intensity, in [0, 1]: 1 shows textures unshaded. Default 0.65,
     * mild enough for texture descriptors to stay repeatable between differently lit faces.
     */
   void
-  setAmbient (double ambient) { ambient_ = ambient; }
+  setAmbient (double ambient)
+  {
+    ambient_ = ambient;
+  }
   double
-  getAmbient () const { return ambient_; }
+  getAmbient () const
+  {
+    return ambient_;
+  }
 
   /** \brief Colour rays per pixel along each axis (n x n rays averaged): anti-aliases texture
     * and edges. Depth, instances and normals always use the single pixel-centre ray.
     * Default 1.
     */
   void
-  setSupersampling (int samples) { supersampling_ = samples; }
+  setSupersampling (int samples)
+  {
+    supersampling_ = samples;
+  }
   int
-  getSupersampling () const { return supersampling_; }
+  getSupersampling () const
+  {
+    return supersampling_;
+  }
 
   /** \brief Render the scene.
     * \param[in] scene the scene

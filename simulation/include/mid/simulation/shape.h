@@ -17,11 +17,11 @@ struct SurfaceHit
   /** \brief Ray parameter of the hit: the point is origin + t * direction. */
   double t = 0.0;
   /** \brief Unit surface normal at the hit, facing the ray's origin, in the model frame. */
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   /** \brief Which textured face was hit (numbering of the shape, e.g. BoxShape::Face). */
   int face = 0;
   /** \brief Texture coordinates (s, t) of the hit on that face, see sampleBilinear(). */
-  Eigen::Vector2d uv = Eigen::Vector2d::Zero ();
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
 };
 
 /** \brief A textured solid or surface that the SceneRenderer can ray-cast: the interface every
@@ -37,7 +37,7 @@ public:
   using Ptr = std::shared_ptr<Shape>;
   using ConstPtr = std::shared_ptr<const Shape>;
 
-  virtual ~Shape () = default;
+  virtual ~Shape() = default;
 
   /** \brief The kind of primitive, e.g. "box" or "cylinder". */
   virtual std::string
@@ -47,9 +47,15 @@ public:
     * truth; instances sharing a shape share the name. Default: empty (the type name is used).
     */
   void
-  setName (const std::string& name) { name_ = name; }
+  setName (const std::string& name)
+  {
+    name_ = name;
+  }
   const std::string&
-  getName () const { return name_; }
+  getName () const
+  {
+    return name_;
+  }
 
   /** \brief Check the parameters and textures.
     * \param[out] problem what is wrong, empty when the shape can be rendered
@@ -94,7 +100,7 @@ public:
   getDimensions () const = 0;
 
 protected:
-  Shape () = default;
+  Shape() = default;
   Shape (const Shape&) = default;
   Shape&
   operator= (const Shape&) = default;

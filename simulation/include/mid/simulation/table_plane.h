@@ -26,7 +26,10 @@ public:
   void
   setTileSize (double tile_x, double tile_y);
   const Eigen::Vector2d&
-  getTileSize () const { return tile_size_; }
+  getTileSize () const
+  {
+    return tile_size_;
+  }
 
   /** \brief Extent of the table along x and y, in metres; 0 (the default) for an infinite
     * plane along that axis.
@@ -34,16 +37,25 @@ public:
   void
   setExtent (double size_x, double size_y);
   const Eigen::Vector2d&
-  getExtent () const { return extent_; }
+  getExtent () const
+  {
+    return extent_;
+  }
 
   /** \brief The texture (converted with toTexture()). */
   void
   setTexture (const cv::Mat& texture);
   const cv::Mat&
-  getTexture () const { return texture_; }
+  getTexture () const
+  {
+    return texture_;
+  }
 
   std::string
-  getTypeName () const override { return "table_plane"; }
+  getTypeName () const override
+  {
+    return "table_plane";
+  }
 
   bool
   validate (std::string& problem) const override;
@@ -71,7 +83,7 @@ public:
 
 private:
   Eigen::Vector2d tile_size_;
-  Eigen::Vector2d extent_ = Eigen::Vector2d::Zero ();
+  Eigen::Vector2d extent_ = Eigen::Vector2d::Zero();
   cv::Mat texture_;
 };
 

@@ -32,7 +32,8 @@ struct TabletopSceneOptions
 /** \brief Names of the textures makeTabletopScene() reads from its texture folder (the
   * repository's data/textures). */
 constexpr const char* TABLETOP_CARTON_FRONT_TEXTURE = "tropicana_apple_juice_front.jpg";
-constexpr const char* TABLETOP_CARTON_BACK_TEXTURE = "god_morgon_orange_juice_front.jpg";
+constexpr const char* TABLETOP_CARTON_BACK_TEXTURE =
+    "god_morgon_orange_juice_front.jpg";
 constexpr const char* TABLETOP_COOKIE_BOX_TEXTURE = "bastoncini_cookie_box.png";
 constexpr const char* TABLETOP_CAN_LABEL_TEXTURE = "alpro_soya_front.jpg";
 

@@ -8,8 +8,7 @@ namespace mid {
 namespace simulation {
 
 /** \brief What a texture lookup outside [0, 1] does. */
-enum class TextureWrap
-{
+enum class TextureWrap {
   /** \brief Repeat the border texel (a texture stretched once over a face). */
   CLAMP,
   /** \brief Repeat the texture (tiled surfaces such as a table top). */

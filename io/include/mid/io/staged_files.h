@@ -4,7 +4,7 @@
 #include <vector>
 
 namespace mid {
-namespace simulation {
+namespace io {
 
 /** \brief Writes a set of output files all-or-nothing (as far as the file system allows):
   * each file is first written under a temporary name next to its destination, and only
@@ -12,7 +12,7 @@ namespace simulation {
   * removed when it is destroyed, so an error never leaves a half-written output file.
   *
   * \code
-  * mid::simulation::StagedFiles files;
+  * mid::io::StagedFiles files;
   * const std::string json_tmp = files.stage ("out/ground_truth.json");
   * if (!writeMyJson (json_tmp) || !files.commit ()) return (-1); // nothing left behind
   * \endcode
@@ -32,7 +32,8 @@ public:
     * same extension (so that writers choosing the format by extension still work), e.g.
     * "out/rgb.png" -> "out/rgb.partial.png".
     * \param[in] path the destination
-    * \return the temporary path
+    * \return the temporary path; empty (with a PCL_ERROR) if the destination's folder is
+    * missing or not writable
     */
   std::string
   stage (const std::string& path);
@@ -57,5 +58,5 @@ private:
   std::vector<Entry> entries_;
 };
 
-} // namespace simulation
+} // namespace io
 } // namespace mid

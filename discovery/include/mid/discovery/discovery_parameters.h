@@ -1,0 +1,85 @@
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace mid {
+
+/** \brief Every parameter of the discovery pipeline, with the values of Abbeloos et al.
+  * (3DV 2017, Sec. 4) as defaults where the paper gives one. Lengths in metres, angles in
+  * radians.
+  */
+struct DiscoveryParameters
+{
+  // --- Keypoints (SIFTKeypointExtractor) ---
+  /** \brief Keep at most this many keypoints, strongest first; 0 keeps all. */
+  int max_keypoints = 0;
+  /** \brief SIFT contrast threshold (OpenCV's default). */
+  double contrast_threshold = 0.04;
+  /** \brief Radius of the neighbourhood a keypoint normal is fitted to. */
+  float normal_radius = 0.015f;
+
+  // --- Self-matching (SelfMatcher) ---
+  /** \brief Largest SIFT descriptor distance of a match (the paper thresholds it, no value). */
+  float max_descriptor_distance = 200.0f;
+  /** \brief A keypoint cannot match another closer than this in 3D. */
+  float min_keypoint_distance = 0.01f;
+  /** \brief Lowe's ratio test, 1 = off (it would drop matches when 3+ instances exist). */
+  float max_distance_ratio = 1.0f;
+  /** \brief Keep only mutual best matches. */
+  bool mutual_check = false;
+
+  // --- Triplets (CorrespondenceRejectorPPFTriplet) ---
+  /** \brief Point pair feature thresholds: 5 mm and 35 degrees. */
+  float ppf_distance = 0.005f;
+  float ppf_angle = static_cast<float> (35.0 * M_PI / 180.0);
+  /** \brief Triangle edges between 10 mm and 125 mm, every angle above 10 degrees. */
+  float min_edge_length = 0.010f;
+  float max_edge_length = 0.125f;
+  float min_triangle_angle = static_cast<float> (10.0 * M_PI / 180.0);
+  /** \brief Triangles closer than this overlap (one instance); negative disables the test. */
+  float overlap_distance = 0.005f;
+  /** \brief L: accepted triplets per keypoint (the paper's L, no value given). */
+  int triplets_per_keypoint = 10;
+  /** \brief Hard cap on accepted triplets (memory bound). */
+  std::size_t max_triplets = 200000;
+
+  // --- Clustering (TransformationSpaceClustering) ---
+  /** \brief DBSCAN eps: 35 mm. */
+  float cluster_distance = 0.035f;
+  /** \brief DBSCAN min samples, the smallest cluster: 14. */
+  std::size_t min_cluster_size = 14;
+
+  // --- Models (MultiInstanceModelBuilder) ---
+  /** \brief Alternations of the joint landmark / pose refinement. */
+  int refinement_iterations = 20;
+  /** \brief Instances whose poses differ by less than this are one instance. */
+  float duplicate_angle = static_cast<float> (10.0 * M_PI / 180.0);
+  float duplicate_distance = 0.01f;
+
+  // --- Additional instances (ModelInstanceDetector) ---
+  /** \brief Compare the models with each other and merge those that are one object. */
+  bool merge_models = true;
+  /** \brief Look for more instances among the keypoints no model uses. */
+  bool detect_additional_instances = true;
+  /** \brief RANSAC inlier threshold 5 mm, at least 5 inliers, inlier ratio above 12.5 %. */
+  float inlier_threshold = 0.005f;
+  std::size_t min_inliers = 5;
+  float min_inlier_ratio = 0.125f;
+  /** \brief RANSAC hypotheses per detection. */
+  int ransac_iterations = 1000;
+  /** \brief Seed of every random choice. */
+  std::uint32_t seed = 0;
+};
+
+/** \brief Check every parameter's range.
+  * \param[in] parameters the parameters
+  * \param[out] problem which parameter is wrong and what it must be; empty if all are valid
+  * \return true if all are valid
+  */
+bool
+validateDiscoveryParameters (const DiscoveryParameters& parameters, std::string& problem);
+
+} // namespace mid

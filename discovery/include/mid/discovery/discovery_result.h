@@ -1,0 +1,33 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+
+#include <pcl/correspondence.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mid {
+
+/** \brief Everything one run of MultiInstanceDiscovery found in a frame. */
+struct DiscoveryResult
+{
+  /** \brief The frame's keypoints (xyz + normal), descriptors and image positions. */
+  KeypointCloud::Ptr keypoints;
+  SIFTDescriptorCloud::Ptr descriptors;
+  ImageKeypoints image_keypoints;
+  /** \brief The self-matches, and how many triplets and clusters they gave. */
+  pcl::Correspondences matches;
+  std::size_t triplets = 0;
+  std::size_t clusters = 0;
+  /** \brief The discovered objects, each with its instances (poses, keypoints). */
+  ObjectModels models;
+  /** \brief Milliseconds per stage, in pipeline order: features, matching, triplets,
+    * clustering, modeling, detection; then total.
+    */
+  std::vector<std::pair<std::string, double>> timing_ms;
+};
+
+} // namespace mid

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <mid/discovery/discovery_result.h>
+
+#include <string>
+
+namespace mid {
+
+/** \brief Version of the result JSON written by formatDiscoveryJson(); it changes whenever a
+  * field changes meaning or disappears (added fields keep it). See doc/result_format.md.
+  */
+constexpr int DISCOVERY_JSON_VERSION = 1;
+
+/** \brief The discovery result as JSON (doc/result_format.md):
+  * {"format": "mid-discovery-result", "version": 1, "input": ..., "timing_ms": {..., "total"},
+  *  "counts": {"keypoints", "matches", "triplets", "clusters", "objects", "instances"},
+  *  "objects": [{"id", "landmarks", "diameter", "instances": [{"pose" (4x4 row-major, model to
+  *  camera, metres), "keypoints" ([u, v] pixels), "bbox" ([u_min, v_min, u_max, v_max]),
+  *  "rms_error"}]}]}.
+  * \param[in] result the result
+  * \param[in] input a description of the input (e.g. the file name), written as given
+  * \return the JSON text, ending in a newline
+  */
+std::string
+formatDiscoveryJson (const DiscoveryResult& result, const std::string& input);
+
+} // namespace mid

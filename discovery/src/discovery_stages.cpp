@@ -1,0 +1,188 @@
+#include <mid/discovery/discovery_stages.h>
+
+#include <mid/features/self_matcher.h>
+#include <mid/registration/correspondence_rejection_ppf_triplet.h>
+#include <mid/registration/model_instance_detector.h>
+#include <mid/registration/model_merging.h>
+#include <mid/registration/model_refinement.h>
+#include <mid/registration/multi_instance_model_builder.h>
+#include <mid/segmentation/transformation_space_clustering.h>
+
+#include <pcl/common/time.h>
+#include <pcl/console/print.h>
+
+#include <set>
+#include <string>
+
+namespace mid {
+
+namespace {
+
+/** A detector for one model with the pipeline's RANSAC parameters. */
+ModelInstanceDetector
+makeDetector (const DiscoveryParameters& p, const std::shared_ptr<const ObjectModel>& model)
+{
+  ModelInstanceDetector detector;
+  detector.setModel (model);
+  detector.setMaxDescriptorDistance (p.max_descriptor_distance);
+  detector.setInlierThreshold (p.inlier_threshold);
+  detector.setMinInliers (p.min_inliers);
+  detector.setMinInlierRatio (p.min_inlier_ratio);
+  detector.setMaxIterations (p.ransac_iterations);
+  detector.setSeed (p.seed);
+  return detector;
+}
+
+/** Model `b` seen as a frame of keypoints: one point per descriptor, at its landmark. */
+void
+modelAsKeypoints (const ObjectModel& b, KeypointCloud& keypoints)
+{
+  keypoints.clear ();
+  for (const int l : b.descriptor_landmarks)
+    keypoints.push_back (b.landmarks[static_cast<std::size_t> (l)]);
+}
+
+/** Merge models that are one object: model j is searched in model i's landmarks (the larger
+  * first); on success j joins i. Returns false only on a detector error.
+  */
+bool
+mergeModels (const DiscoveryParameters& p, const KeypointCloud& frame, ObjectModels& models)
+{
+  for (std::size_t i = 0; i < models.size (); ++i)
+    for (std::size_t j = i + 1; j < models.size ();) {
+      auto points = pcl::make_shared<KeypointCloud> ();
+      modelAsKeypoints (models[i], *points);
+      auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
+      ModelInstanceDetector detector = makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
+      detector.setInputKeypoints (points);
+      detector.setInputDescriptors (descriptors);
+      detector.setMaxInstances (1);
+      ModelInstances found;
+      if (!detector.detect (found))
+        return false;
+      if (found.empty ()) {
+        ++j;
+        continue;
+      }
+      // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
+      std::vector<std::pair<int, int>> same;
+      for (std::size_t o = 0; o < found.front ().keypoints.size (); ++o)
+        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (found.front ().keypoints[o])],
+                           found.front ().landmarks[o]);
+      mergeModel (models[i], models[j], found.front ().pose.inverse (), same, p.duplicate_angle,
+                  p.duplicate_distance);
+      refineModel (models[i], frame, p.refinement_iterations);
+      models.erase (models.begin () + static_cast<std::ptrdiff_t> (j));
+    }
+  return true;
+}
+
+/** Look for each model's instances among the keypoints no model uses yet. */
+bool
+detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result)
+{
+  std::set<pcl::index_t> used;
+  for (const auto& model : result.models)
+    for (const auto& instance : model.instances)
+      used.insert (instance.keypoints.begin (), instance.keypoints.end ());
+  for (auto& model : result.models) {
+    auto candidates = pcl::make_shared<pcl::Indices> ();
+    for (std::size_t k = 0; k < result.keypoints->size (); ++k)
+      if (used.count (static_cast<pcl::index_t> (k)) == 0)
+        candidates->push_back (static_cast<pcl::index_t> (k));
+    ModelInstanceDetector detector = makeDetector (p, std::make_shared<const ObjectModel> (model));
+    detector.setInputKeypoints (result.keypoints);
+    detector.setInputDescriptors (result.descriptors);
+    detector.setCandidates (candidates);
+    ModelInstances found;
+    if (!detector.detect (found))
+      return false;
+    for (const auto& instance : found) {
+      addInstance (model, instance, *result.descriptors, p.duplicate_angle, p.duplicate_distance);
+      used.insert (instance.keypoints.begin (), instance.keypoints.end ());
+    }
+    if (!found.empty ())
+      refineModel (model, *result.keypoints, p.refinement_iterations);
+  }
+  return true;
+}
+
+} // namespace
+
+bool
+discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result)
+{
+  if (!result.keypoints || !result.descriptors) {
+    PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
+    return false;
+  }
+  std::string problem;
+  if (!validateDiscoveryParameters (p, problem)) {
+    PCL_ERROR ("[mid::discoverFromKeypoints] Invalid parameter: %s.\n", problem.c_str ());
+    return false;
+  }
+  pcl::StopWatch watch;
+  SelfMatcher matcher;
+  matcher.setInputKeypoints (result.keypoints);
+  matcher.setInputDescriptors (result.descriptors);
+  matcher.setMaxDescriptorDistance (p.max_descriptor_distance);
+  matcher.setMinKeypointDistance (p.min_keypoint_distance);
+  matcher.setMaxDistanceRatio (p.max_distance_ratio);
+  matcher.setMutualCheck (p.mutual_check);
+  if (!matcher.match (result.matches))
+    return false;
+  result.timing_ms.emplace_back ("matching", watch.getTime ());
+
+  watch.reset ();
+  CorrespondenceRejectorPPFTriplet rejector;
+  rejector.setInputSource (result.keypoints);
+  rejector.setMaxDistanceDifference (p.ppf_distance);
+  rejector.setMaxAngleDifference (p.ppf_angle);
+  rejector.setMinEdgeLength (p.min_edge_length);
+  rejector.setMaxEdgeLength (p.max_edge_length);
+  rejector.setMinTriangleAngle (p.min_triangle_angle);
+  rejector.setOverlapDistance (p.overlap_distance);
+  rejector.setMaxTripletsPerKeypoint (p.triplets_per_keypoint);
+  rejector.setMaxTriplets (p.max_triplets);
+  pcl::Correspondences remaining;
+  if (!result.matches.empty ())
+    rejector.getRemainingCorrespondences (result.matches, remaining);
+  auto triplets = std::make_shared<const TripletMatches> (rejector.getTripletMatches ());
+  result.triplets = triplets->size ();
+  result.timing_ms.emplace_back ("triplets", watch.getTime ());
+
+  watch.reset ();
+  TransformationSpaceClustering clustering;
+  clustering.setInputCloud (result.keypoints);
+  clustering.setSceneCloud (result.keypoints);
+  clustering.setInputTriplets (triplets);
+  clustering.setClusterDistance (p.cluster_distance);
+  clustering.setMinClusterSize (p.min_cluster_size);
+  std::vector<pcl::Correspondences> groups;
+  if (!triplets->empty ())
+    clustering.cluster (groups);
+  auto clusters = std::make_shared<const TripletClusters> (clustering.getClusters ());
+  result.clusters = clusters->size ();
+  result.timing_ms.emplace_back ("clustering", watch.getTime ());
+
+  watch.reset ();
+  MultiInstanceModelBuilder builder;
+  builder.setInputCloud (result.keypoints);
+  builder.setInputDescriptors (result.descriptors);
+  builder.setClusters (clusters);
+  builder.setRefinementIterations (p.refinement_iterations);
+  builder.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+  if (!builder.compute (result.models))
+    return false;
+  result.timing_ms.emplace_back ("modeling", watch.getTime ());
+
+  watch.reset ();
+  if (p.merge_models && !mergeModels (p, *result.keypoints, result.models))
+    return false;
+  if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
+    return false;
+  result.timing_ms.emplace_back ("detection", watch.getTime ());
+  return true;
+}
+
+} // namespace mid

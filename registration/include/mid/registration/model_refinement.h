@@ -1,0 +1,29 @@
+#pragma once
+
+#include <mid/registration/object_model.h>
+
+#include <vector>
+
+namespace mid {
+
+/** \brief Jointly refine a model's landmarks and its instances' poses: least squares over all
+  * observations, sum over (instance n, keypoint k observing landmark l) of
+  * |pose_n * landmark_l - keypoint_k|^2, by alternating the two closed-form block minimizations:
+  * each landmark becomes the mean of its observations mapped into the model frame, and each pose
+  * the Umeyama fit of its landmarks onto its keypoints. Each step cannot increase the cost, so
+  * the cost decreases monotonically to a (local) minimum; the pose of `fixed_instance` is kept
+  * to fix the gauge (the model frame).
+  *
+  * \param[in,out] model landmarks and instance poses (observations unchanged)
+  * \param[in] keypoints the frame's keypoints the observations index
+  * \param[in] max_iterations most alternations
+  * \param[in] fixed_instance the instance whose pose stays fixed
+  * \param[out] costs the mean squared residual before the first and after each iteration
+  *             (optional)
+  * \return the final root mean square residual over all observations (metres)
+  */
+float
+refineModel (ObjectModel& model, const KeypointCloud& keypoints, int max_iterations = 20,
+             std::size_t fixed_instance = 0, std::vector<float>* costs = nullptr);
+
+} // namespace mid

@@ -1,0 +1,111 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+#include <mid/registration/triplet_cluster.h>
+
+#include <pcl/pcl_base.h>
+
+#include <memory>
+
+namespace mid {
+
+/** \brief Builds object models and their instances from clusters of triplet matches (Abbeloos
+  * et al., 3DV 2017, "Initial Model Creation").
+  *
+  * Each cluster holds two point sets (keypoints on two instances) and the rigid motion between
+  * them. The sets become the nodes of a graph: a cluster joins its two sets with an edge weighted
+  * by its alignment error (rms), and two sets that share keypoints (so lie on one instance) are
+  * joined with the small weight delta and the identity. Every connected component is one object:
+  * the set with the most matches and shared points is the reference, and every other set is
+  * brought into its frame along its Dijkstra shortest path (Boost Graph). Sets joined by shared
+  * keypoints form one instance; instances whose poses coincide (within the duplicate thresholds)
+  * are merged. Keypoints matched to each other across instances form one landmark. Landmarks and
+  * instance poses are then refined jointly (refineModel(), alternating Procrustes; the reference
+  * instance fixes the frame), and the model frame is centred on the landmarks.
+  *
+  * \code
+  * mid::MultiInstanceModelBuilder builder;
+  * builder.setInputCloud (keypoints);              // the frame's keypoints (xyz + normal)
+  * builder.setInputDescriptors (descriptors);
+  * builder.setClusters (clusters);                 // from TransformationSpaceClustering
+  * mid::ObjectModels models;
+  * builder.compute (models);
+  * \endcode
+  *
+  * Please cite: W. Abbeloos et al., "3D Object Discovery and Modeling Using Single RGB-D Images
+  * Containing Multiple Object Instances", 3DV 2017.
+  */
+class MultiInstanceModelBuilder : public pcl::PCLBase<pcl::PointNormal>
+{
+public:
+  using Ptr = std::shared_ptr<MultiInstanceModelBuilder>;
+  using ConstPtr = std::shared_ptr<const MultiInstanceModelBuilder>;
+  using TripletClustersConstPtr = std::shared_ptr<const TripletClusters>;
+
+  /** \brief One descriptor per keypoint of the input cloud. */
+  void
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
+  const SIFTDescriptorCloud::ConstPtr&
+  getInputDescriptors () const { return descriptors_; }
+
+  /** \brief The clusters of triplet matches (indices into the input cloud). */
+  void
+  setClusters (const TripletClustersConstPtr& clusters) { clusters_ = clusters; }
+  const TripletClustersConstPtr&
+  getClusters () const { return clusters_; }
+
+  /** \brief The weight delta of an edge between sets that share keypoints. Default 1e-4. */
+  void
+  setSharedPointWeight (double delta) { shared_point_weight_ = delta; }
+  double
+  getSharedPointWeight () const { return shared_point_weight_; }
+
+  /** \brief Most alternations of the joint refinement; 0 skips it. Default 20. */
+  void
+  setRefinementIterations (int iterations) { refinement_iterations_ = iterations; }
+  int
+  getRefinementIterations () const { return refinement_iterations_; }
+
+  /** \brief Two instances of one object are the same if their poses differ by less than this
+    * rotation (radians) and this distance at the model centre (metres). Defaults 10 deg, 0.01.
+    */
+  void
+  setDuplicateThresholds (float angle, float distance)
+  {
+    duplicate_angle_ = angle;
+    duplicate_distance_ = distance;
+  }
+  float
+  getDuplicateAngle () const { return duplicate_angle_; }
+  float
+  getDuplicateDistance () const { return duplicate_distance_; }
+
+  /** \brief Build the models.
+    * \param[out] models one per connected component, largest (most observations) first
+    * \return false (models cleared, PCL_ERROR printed) on missing or inconsistent input
+    */
+  bool
+  compute (ObjectModels& models);
+
+  /** \brief Keypoints that belong to no model after the last compute(), in ascending order:
+    * the candidates for additional instances.
+    */
+  const pcl::Indices&
+  getUnusedKeypoints () const { return unused_keypoints_; }
+
+private:
+  /** \brief Check inputs and parameters; prints the problem. */
+  bool
+  checkInputs () const;
+
+  SIFTDescriptorCloud::ConstPtr descriptors_;
+  TripletClustersConstPtr clusters_;
+  double shared_point_weight_ = 1e-4;
+  int refinement_iterations_ = 20;
+  float duplicate_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
+  float duplicate_distance_ = 0.01f;
+  pcl::Indices unused_keypoints_;
+};
+
+} // namespace mid

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+#include <pcl/types.h>
+
+#include <vector>
+
+namespace mid {
+
+/** \brief One instance of a discovered object in a frame. */
+struct ModelInstance
+{
+  /** \brief Rigid pose mapping model coordinates to camera coordinates (metres). */
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
+  /** \brief The frame's keypoints observed on this instance (indices into the keypoint cloud),
+    * and for each the model landmark it observes.
+    */
+  pcl::Indices keypoints;
+  std::vector<int> landmarks;
+  /** \brief Root mean square of |pose * landmark - keypoint| over the observations (metres). */
+  float rms_error = 0.0f;
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+using ModelInstances = std::vector<ModelInstance, Eigen::aligned_allocator<ModelInstance>>;
+
+/** \brief A sparse 3D model of an object discovered from its repeated instances, and where those
+  * instances are.
+  *
+  * The model frame is centred on the landmarks' centroid, with the axes of the camera at the
+  * reference instance. Each landmark is a 3D point on the object with the normal there; every
+  * observation of a landmark keeps its SIFT descriptor, so the model can be matched against new
+  * keypoints (descriptor_landmarks says which landmark each descriptor belongs to).
+  */
+struct ObjectModel
+{
+  /** \brief Landmarks in the model frame: position and unit normal. */
+  KeypointCloud landmarks;
+  /** \brief Descriptors of the landmarks' observations. */
+  SIFTDescriptorCloud descriptors;
+  std::vector<int> descriptor_landmarks;
+  /** \brief Largest distance between two landmarks (metres). */
+  float diameter = 0.0f;
+  /** \brief Where the object is in the frame it was discovered in (or detected in). */
+  ModelInstances instances;
+};
+
+using ObjectModels = std::vector<ObjectModel>;
+
+/** \brief Recompute an instance's rms_error from its observations. */
+void
+updateInstanceError (const ObjectModel& model, const KeypointCloud& keypoints,
+                     ModelInstance& instance);
+
+/** \brief True if two model -> camera poses place the model within max_angle (radians) and
+  * max_distance (metres, measured at the model point `center`) of each other.
+  */
+bool
+posesCoincide (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector3f& center,
+               float max_angle, float max_distance);
+
+/** \brief Recompute a model's diameter from its landmarks. */
+void
+updateModelDiameter (ObjectModel& model);
+
+} // namespace mid

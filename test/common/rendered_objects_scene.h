@@ -1,0 +1,51 @@
+#pragma once
+
+#include <mid/simulation/rendered_frame.h>
+
+#include <Eigen/Geometry>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <string>
+#include <vector>
+
+namespace mid {
+namespace test {
+
+/** \brief One textured box of a rendered test scene. */
+struct BoxSpec
+{
+  /** \brief Image (in the repository's data/textures) on the face towards the camera. */
+  std::string texture;
+  /** \brief Edge lengths (metres); the textured face is the one with outward normal -z. */
+  Eigen::Vector3d size{0.16, 0.11, 0.04};
+  /** \brief Model -> camera pose. */
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
+};
+
+/** \brief A rendered frame of boxes in front of an untextured background, exactly known. */
+struct RenderedObjectsScene
+{
+  mid::simulation::RenderedFrame frame;
+  pcl::PointCloud<pcl::PointXYZRGBA>::Ptr cloud;
+  std::vector<BoxSpec> boxes;
+};
+
+/** \brief A box pose: centred at (x, y, z) in the camera frame, its textured face turned by
+  * `roll` degrees in the image and tilted by `tilt` degrees about the camera's x axis.
+  */
+Eigen::Isometry3d
+boxPose (double x, double y, double z, double roll, double tilt = 0.0);
+
+/** \brief Render the boxes (exact depth, no sensor noise) into a VGA frame and cloud. */
+RenderedObjectsScene
+renderBoxes (const std::vector<BoxSpec>& boxes);
+
+/** \brief The box (index into the scene's boxes) most of the given image keypoints lie on, or -1
+  * if most lie on the background.
+  */
+int
+boxUnderKeypoints (const RenderedObjectsScene& scene, const std::vector<Eigen::Vector2f>& pixels);
+
+} // namespace test
+} // namespace mid

@@ -1,0 +1,94 @@
+#include "fuzz_inputs.h"
+
+#include <mid/io/organized_cloud_io.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace mid {
+namespace fuzz {
+
+namespace {
+
+std::string
+temporaryPCDPath ()
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path dir =
+      fs::is_directory ("/dev/shm", error) ? fs::path ("/dev/shm") : fs::temp_directory_path ();
+  return (dir / ("mid_fuzz_" + std::to_string (::getpid ()) + ".pcd")).string ();
+}
+
+} // namespace
+
+bool
+loadPCDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
+{
+  static const std::string path = temporaryPCDPath ();
+  {
+    std::ofstream file (path, std::ios::binary | std::ios::trunc);
+    file.write (reinterpret_cast<const char*> (data), static_cast<std::streamsize> (size));
+  }
+  const bool loaded = io::loadOrganizedPCD (path, cloud);
+  std::remove (path.c_str ());
+  return loaded;
+}
+
+bool
+loadRGBDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
+{
+  std::size_t color_size = 0;
+  if (size >= 4)
+    color_size = static_cast<std::size_t> (data[0]) | static_cast<std::size_t> (data[1]) << 8U |
+                 static_cast<std::size_t> (data[2]) << 16U |
+                 static_cast<std::size_t> (data[3]) << 24U;
+  const std::size_t body = size >= 4 ? size - 4 : 0;
+  color_size = std::min (color_size, body);
+  const Bytes color_bytes (data + (size - body), data + (size - body) + color_size);
+  const Bytes depth_bytes (data + (size - body) + color_size, data + size);
+  cv::Mat color, depth;
+  if (!color_bytes.empty ())
+    color = cv::imdecode (color_bytes, cv::IMREAD_COLOR);
+  if (!depth_bytes.empty ())
+    depth = cv::imdecode (depth_bytes, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
+  return io::rgbdToCloud (color, depth, {kFx, kFy, kCx, kCy, kDepthScale}, cloud);
+}
+
+Bytes
+packRGBD (const Bytes& color, const Bytes& depth)
+{
+  const auto n = static_cast<std::uint32_t> (color.size ());
+  Bytes packed{static_cast<std::uint8_t> (n & 0xFFU), static_cast<std::uint8_t> ((n >> 8U) & 0xFFU),
+               static_cast<std::uint8_t> ((n >> 16U) & 0xFFU),
+               static_cast<std::uint8_t> ((n >> 24U) & 0xFFU)};
+  packed.insert (packed.end (), color.begin (), color.end ());
+  packed.insert (packed.end (), depth.begin (), depth.end ());
+  return packed;
+}
+
+Bytes
+readFile (const std::string& path)
+{
+  std::ifstream file (path, std::ios::binary);
+  return {std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char> ()};
+}
+
+bool
+keepsTheContract (bool loaded, const Cloud& cloud)
+{
+  if (!loaded)
+    return cloud.empty () && cloud.width == 0 && cloud.height == 0;
+  return cloud.height >= 2 &&
+         static_cast<std::size_t> (cloud.width) * cloud.height == cloud.size ();
+}
+
+} // namespace fuzz
+} // namespace mid
