@@ -19,6 +19,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -252,10 +253,9 @@ writeOutputs (const Options& options,
   return writeText (files.stage (dir + "ground_truth.json"), json) && files.commit();
 }
 
-} // namespace
-
+/** The whole program; main() only adds a last-resort handler for exceptions. */
 int
-main (int argc, char** argv)
+run (int argc, char** argv)
 {
   if (pcl::console::find_switch (argc, argv, "-h") ||
       pcl::console::find_switch (argc, argv, "--help")) {
@@ -327,4 +327,18 @@ main (int argc, char** argv)
   print_value ("%.1f", write_ms);
   print_info ("\n");
   return 0;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  try {
+    return run (argc, argv);
+  }
+  catch (const std::exception& exception) {
+    print_error ("Unexpected error: %s\n", exception.what());
+    return 1;
+  }
 }

@@ -12,6 +12,8 @@ namespace {
 std::string
 number (double value)
 {
+  if (value == 0.0)
+    value = 0.0; // no "-0"
   char buffer[32];
   std::snprintf (buffer, sizeof (buffer), "%.9g", value);
   return buffer;

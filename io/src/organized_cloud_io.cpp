@@ -54,6 +54,23 @@ private:
   pcl::console::VERBOSITY_LEVEL level_;
 };
 
+/** Runs one call of PCL's PCD reader quietly and returns its status. The reader throws on some
+  * malformed headers (std::out_of_range for a "DATA" line without a value, found by fuzzing);
+  * an exception counts as a failed read (-1) instead of ending the program.
+  */
+template <typename ReadFunction>
+int
+readQuietly (ReadFunction read)
+{
+  QuietPCLConsole quiet;
+  try {
+    return read ();
+  }
+  catch (...) {
+    return -1;
+  }
+}
+
 bool
 hasField (const pcl::PCLPointCloud2& header, const std::string& name)
 {
@@ -123,11 +140,9 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   Eigen::Quaternionf orientation;
   int version = 0, data_type = 0;
   unsigned int data_index = 0;
-  int status = 0;
-  {
-    QuietPCLConsole quiet;
-    status = reader.readHeader (path, header, origin, orientation, version, data_type, data_index);
-  }
+  int status = readQuietly ([&] {
+    return reader.readHeader (path, header, origin, orientation, version, data_type, data_index);
+  });
   if (status < 0 || header.fields.empty ())
     return fail ("loadOrganizedPCD", "'" + path + "' is not a valid PCD file (bad header)", cloud);
   if (!hasField (header, "x") || !hasField (header, "y") || !hasField (header, "z"))
@@ -140,10 +155,7 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
-  {
-    QuietPCLConsole quiet;
-    status = reader.read (path, cloud);
-  }
+  status = readQuietly ([&] { return reader.read (path, cloud); });
   if (status < 0)
     return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);

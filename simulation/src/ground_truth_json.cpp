@@ -58,7 +58,7 @@ quoted (const std::string& text)
 std::string
 poseJSON (const Eigen::Isometry3d& pose)
 {
-  const Eigen::Matrix4d matrix = pose.matrix();
+  const Eigen::Matrix4d& matrix = pose.matrix();
   std::string out = "[";
   for (int row = 0; row < 4; ++row) {
     out += row == 0 ? "[" : ", [";
@@ -75,7 +75,7 @@ objectFieldsJSON (const SceneObject& object)
 {
   std::string out;
   if (!object.shape)
-    return "\"object\": null, \"pose\": " + poseJSON (object.pose);
+    return R"("object": null, "pose": )" + poseJSON (object.pose);
   const std::string& name = object.shape->getName();
   out += "\"object\": " + quoted (name.empty() ? object.shape->getTypeName() : name);
   out += ", \"type\": " + quoted (object.shape->getTypeName()) + ", \"dimensions\": {";

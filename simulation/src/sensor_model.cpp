@@ -128,10 +128,10 @@ removeGrazing (const SensorModel& model, const RenderedFrame& frame, cv::Mat& de
   const double min_cosine = std::cos (model.max_incidence_angle * kPi / 180.0);
   for (int v = 0; v < depth.rows; ++v)
     for (int u = 0; u < depth.cols; ++u) {
-      float& z = depth.at<float> (v, u);
+      auto& z = depth.at<float> (v, u);
       if (z <= 0.0f)
         continue;
-      const cv::Vec3f& n = frame.normals.at<cv::Vec3f> (v, u);
+      const auto& n = frame.normals.at<cv::Vec3f> (v, u);
       const Eigen::Vector3d ray = pixelRay (frame.camera, u, v);
       const double cosine =
           std::abs (n[0] * ray.x() + n[1] * ray.y() + n[2] * ray.z()) / ray.norm();

@@ -70,15 +70,18 @@ footprintsOverlap (const Footprint& a, const Footprint& b, double gap)
                                    {std::cos (b.yaw), std::sin (b.yaw)},
                                    {-std::sin (b.yaw), std::cos (b.yaw)}};
   const Eigen::Vector2d offset = b.center - a.center;
-  for (const Eigen::Vector2d& axis : axes) {
-    const double reach_a = std::abs ((a.half.x() + 0.5 * gap) * axes[0].dot (axis)) +
-                           std::abs ((a.half.y() + 0.5 * gap) * axes[1].dot (axis));
-    const double reach_b = std::abs ((b.half.x() + 0.5 * gap) * axes[2].dot (axis)) +
-                           std::abs ((b.half.y() + 0.5 * gap) * axes[3].dot (axis));
-    if (std::abs (offset.dot (axis)) > reach_a + reach_b)
-      return false; // separating axis
-  }
-  return true;
+  // Separating axis test: the rectangles (grown by half the gap) overlap unless one of the
+  // four edge directions separates their projections.
+  return std::all_of (
+      std::begin (axes), std::end (axes), [&] (const Eigen::Vector2d& axis) {
+        const double reach_a =
+            std::abs ((a.half.x() + 0.5 * gap) * axes[0].dot (axis)) +
+            std::abs ((a.half.y() + 0.5 * gap) * axes[1].dot (axis));
+        const double reach_b =
+            std::abs ((b.half.x() + 0.5 * gap) * axes[2].dot (axis)) +
+            std::abs ((b.half.y() + 0.5 * gap) * axes[3].dot (axis));
+        return std::abs (offset.dot (axis)) <= reach_a + reach_b;
+      });
 }
 
 /** Whether the footprint's box (footprint times height) lies in the area and in view. */
@@ -357,6 +360,7 @@ makeTabletopScene (const TabletopSceneOptions& options,
             " objects on the table in view without contact; use fewer instances",
         scene);
   std::vector<int> spins;
+  spins.reserve (options.instances);
   for (int i = 0; i < options.instances; ++i)
     spins.push_back (random.uniformInt (4));
   const BoxShape::Ptr carton = makeCarton (textures[0], textures[1]);

@@ -78,8 +78,8 @@ sampleBilinear (
   const double y = t * texture.rows - 0.5;
   const double x_floor = std::floor (x);
   const double y_floor = std::floor (y);
-  const float wx = static_cast<float> (x - x_floor);
-  const float wy = static_cast<float> (y - y_floor);
+  const auto wx = static_cast<float> (x - x_floor);
+  const auto wy = static_cast<float> (y - y_floor);
   // Clamp before the conversion to int: coordinates far outside must not overflow.
   const double limit = 1e8;
   const int x0 = static_cast<int> (std::fmax (-limit, std::fmin (limit, x_floor)));
@@ -88,13 +88,11 @@ sampleBilinear (
   const int c1 = wrapIndex (x0 + 1, texture.cols, wrap_s);
   const auto* row0 = texture.ptr<cv::Vec3b> (wrapIndex (y0, texture.rows, wrap_t));
   const auto* row1 = texture.ptr<cv::Vec3b> (wrapIndex (y0 + 1, texture.rows, wrap_t));
-  cv::Vec3f color;
-  for (int channel = 0; channel < 3; ++channel) {
-    const float top = row0[c0][channel] + wx * (row0[c1][channel] - row0[c0][channel]);
-    const float bottom =
-        row1[c0][channel] + wx * (row1[c1][channel] - row1[c0][channel]);
-    color[channel] = top + wy * (bottom - top);
-  }
+  const cv::Vec3f top_left (row0[c0]), top_right (row0[c1]);
+  const cv::Vec3f bottom_left (row1[c0]), bottom_right (row1[c1]);
+  const cv::Vec3f top = top_left + (top_right - top_left) * wx;
+  const cv::Vec3f bottom = bottom_left + (bottom_right - bottom_left) * wx;
+  const cv::Vec3f color = top + (bottom - top) * wy;
   return color;
 }
 

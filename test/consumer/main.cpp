@@ -1,5 +1,6 @@
-// Links the installed mid::io and mid::features and checks that they work: a tiny RGB-D frame
+// Links the installed mid::io, mid::features and mid::discovery and checks that they work: a tiny RGB-D frame
 // is turned into a cloud, and the point pair feature of two points is computed.
+#include <mid/discovery/multi_instance_discovery.h>
 #include <mid/features/point_pair_feature.h>
 #include <mid/features/self_matcher.h>
 #include <mid/io/organized_cloud_io.h>
@@ -23,6 +24,10 @@ main ()
   if (!mid::computePointPairFeature ({0, 0, 0}, {0, 0, 1}, {0.1f, 0, 0}, {0, 0, 1}, feature) ||
       std::abs (feature.distance - 0.1f) > 1e-6f)
     return 1;
+  std::string problem;
+  if (!mid::validateDiscoveryParameters (mid::DiscoveryParameters (), problem))
+    return 1;
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGB> discovery; // links the explicit instantiation
   mid::SelfMatcher matcher;
   std::cout << "consumer ok: " << cloud.size () << " points, default max descriptor distance "
             << matcher.getMaxDescriptorDistance () << "\n";
