@@ -6,6 +6,7 @@
 #include <mid/discovery/result_json.h>
 #include <mid/io/organized_cloud_io.h>
 #include <mid/io/staged_files.h>
+#include <mid/registration/object_model_io.h>
 
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
@@ -32,6 +33,7 @@ struct Options
   std::string color_path;
   std::string depth_path;
   std::string json_path;
+  std::string model_prefix;
   mid::io::CameraIntrinsics intrinsics;
   mid::DiscoveryParameters parameters;
 };
@@ -52,6 +54,7 @@ printHelp (const char* program)
   print_info ("  -depth_scale S      metres per depth unit (default 0.001)\n");
   print_info ("Output:\n");
   print_info ("  -json FILE          write the result as JSON (no window, no display needed)\n");
+  print_info ("  -models PREFIX      write each object's model as PREFIX<id>.json + PREFIX<id>.pcd\n");
   print_info ("Parameters (defaults: Abbeloos et al. 3DV 2017 where the paper gives a value):\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
     print_info ("  %-19s %s (default ", option, meaning);
@@ -119,6 +122,7 @@ parseOptions (int argc, char** argv, Options& options)
 
   mid::DiscoveryParameters& p = options.parameters;
   parse_argument (argc, argv, "-json", options.json_path);
+  parse_argument (argc, argv, "-models", options.model_prefix);
   parse_argument (argc, argv, "-max_keypoints", p.max_keypoints);
   parse_argument (argc, argv, "-contrast", p.contrast_threshold);
   parse_argument (argc, argv, "-normal_radius", p.normal_radius);
@@ -183,10 +187,12 @@ main (int argc, char** argv)
     return 1;
   const double load_ms = watch.getTime ();
 
-  // Stage the JSON before the work: a missing or unwritable folder fails now, not after it.
+  // Stage the outputs before the work: a missing or unwritable folder fails now, not after it.
   mid::io::StagedFiles outputs;
   std::string json_temporary;
   if (!options.json_path.empty () && (json_temporary = outputs.stage (options.json_path)).empty ())
+    return 1;
+  if (!options.model_prefix.empty () && mid::io::StagedFiles ().stage (options.model_prefix + "0.json").empty ())
     return 1;
 
   mid::MultiInstanceDiscovery<PointT> discovery;
@@ -223,15 +229,21 @@ main (int argc, char** argv)
   }
   print_info ("\n");
 
+  for (std::size_t m = 0; !options.model_prefix.empty () && m < result.models.size (); ++m)
+    if (!mid::saveObjectModel (options.model_prefix + std::to_string (m) + ".json", result.models[m],
+                               &outputs))
+      return 1;
   if (!options.json_path.empty ()) {
     std::ofstream json (json_temporary);
     json << mid::formatDiscoveryJson (result, options.pcd_path.empty () ? options.color_path
                                                                         : options.pcd_path);
     json.close ();
-    if (!json || !outputs.commit ()) {
+    if (!json) {
       print_error ("Could not write '%s'.\n", options.json_path.c_str ());
       return 1;
     }
   }
+  if (!outputs.commit ())
+    return 1;
   return 0;
 }

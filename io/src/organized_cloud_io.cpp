@@ -8,8 +8,11 @@
 #include <pcl/point_types.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -20,6 +23,108 @@ namespace {
 
 /** Median |z| above which a cloud is taken to be in millimetres rather than metres. */
 constexpr float kMaxPlausibleMedianDepth = 100.0f;
+
+/** Largest image we decode: 8K UHD (7680 x 4320) fits, and the cloud of such a frame already
+  * takes 1 GiB. A few bytes of PNG or JPEG header can claim 65535 x 65535 pixels, which
+  * OpenCV would allocate before it finds out that the data is missing.
+  */
+constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 25U;
+
+constexpr std::array<std::uint8_t, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr std::array<std::uint8_t, 3> kJpegSignature{0xFF, 0xD8, 0xFF};
+
+template <std::size_t N>
+bool
+startsWith (const std::vector<std::uint8_t>& data, const std::array<std::uint8_t, N>& prefix)
+{
+  return data.size () >= N && std::equal (prefix.begin (), prefix.end (), data.begin ());
+}
+
+std::uint32_t
+bigEndian (const std::vector<std::uint8_t>& data, std::size_t offset, std::size_t bytes)
+{
+  std::uint32_t value = 0;
+  for (std::size_t i = 0; i < bytes; ++i)
+    value = (value << 8U) | data[offset + i];
+  return value;
+}
+
+/** Width x height from a PNG's IHDR chunk or a JPEG's start-of-frame marker; 0 if not found. */
+std::uint64_t
+headerPixels (const std::vector<std::uint8_t>& data)
+{
+  if (startsWith (data, kPngSignature))
+    return data.size () < 24 ? 0 : std::uint64_t{bigEndian (data, 16, 4)} * bigEndian (data, 20, 4);
+  // JPEG: walk the marker segments up to the first SOFn (C0..CF except C4 DHT, C8, CC DAC).
+  std::size_t at = 2;
+  while (at + 4 <= data.size () && data[at] == 0xFF) {
+    const std::uint8_t marker = data[at + 1];
+    if (marker == 0xFF) { // a fill byte
+      ++at;
+      continue;
+    }
+    if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC)
+      return at + 9 > data.size () ? 0
+                                   : std::uint64_t{bigEndian (data, at + 5, 2)} *
+                                         bigEndian (data, at + 7, 2);
+    const bool standalone = marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7);
+    at += standalone ? 2 : 2 + bigEndian (data, at + 2, 2);
+  }
+  return 0;
+}
+
+/** Decodes one encoded image; `name` says which in the problem. Only PNG (color or 16-bit
+  * depth) and JPEG (color) are decoded: OpenCV picks its decoder by the content, not by the file
+  * name, and some of Debian's decoders end the process on bad input (GDCM asserts on a
+  * damaged DICOM header, found by fuzzing).
+  */
+bool
+decodeImage (const std::vector<std::uint8_t>& data,
+             bool is_depth,
+             const std::string& name,
+             cv::Mat& image,
+             std::string& problem)
+{
+  image.release ();
+  const bool png = startsWith (data, kPngSignature);
+  if (!png && (is_depth || !startsWith (data, kJpegSignature))) {
+    problem = name + (is_depth ? " is not a PNG image (depth must be a 16-bit PNG)"
+                               : " is not a PNG or JPEG image");
+    return false;
+  }
+  const std::uint64_t pixels = headerPixels (data);
+  if (pixels > kMaxImagePixels) {
+    problem = name + " claims " + std::to_string (pixels) + " pixels, more than the " +
+              std::to_string (kMaxImagePixels) + " an RGB-D frame may have";
+    return false;
+  }
+  try {
+    image = cv::imdecode (data, is_depth ? cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR
+                                         : cv::IMREAD_COLOR);
+  }
+  catch (const std::exception&) {
+    image.release ();
+  }
+  if (image.empty ()) {
+    problem = name + " is not a readable image (corrupt or truncated)";
+    return false;
+  }
+  if (is_depth && image.type () != CV_16UC1) {
+    problem = name + " is not a single-channel 16-bit depth image";
+    return false;
+  }
+  return true;
+}
+
+bool
+readFile (const std::string& path, std::vector<std::uint8_t>& data)
+{
+  std::ifstream file (path, std::ios::binary);
+  if (!file)
+    return false;
+  data.assign (std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char> ());
+  return !file.bad ();
+}
 
 bool
 isReadableFile (const std::string& path)
@@ -165,9 +270,11 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   return true;
 }
 
+namespace {
+
 template <typename PointT>
 bool
-rgbdToCloud (const cv::Mat& color,
+backProject (const cv::Mat& color,
              const cv::Mat& depth,
              const CameraIntrinsics& intrinsics,
              pcl::PointCloud<PointT>& cloud)
@@ -226,6 +333,38 @@ rgbdToCloud (const cv::Mat& color,
   return true;
 }
 
+} // namespace
+
+template <typename PointT>
+bool
+rgbdToCloud (const cv::Mat& color,
+             const cv::Mat& depth,
+             const CameraIntrinsics& intrinsics,
+             pcl::PointCloud<PointT>& cloud)
+{
+  try {
+    return backProject (color, depth, intrinsics, cloud);
+  }
+  catch (const std::exception& e) {
+    return fail ("rgbdToCloud", std::string ("cannot build the cloud: ") + e.what (), cloud);
+  }
+}
+
+template <typename PointT>
+bool
+decodeRGBD (const std::vector<std::uint8_t>& color_data,
+            const std::vector<std::uint8_t>& depth_data,
+            const CameraIntrinsics& intrinsics,
+            pcl::PointCloud<PointT>& cloud)
+{
+  cv::Mat color, depth;
+  std::string problem;
+  if (!decodeImage (color_data, false, "the color image", color, problem) ||
+      !decodeImage (depth_data, true, "the depth image", depth, problem))
+    return fail ("decodeRGBD", problem, cloud);
+  return rgbdToCloud (color, depth, intrinsics, cloud);
+}
+
 template <typename PointT>
 bool
 loadRGBD (const std::string& color_path,
@@ -233,18 +372,16 @@ loadRGBD (const std::string& color_path,
           const CameraIntrinsics& intrinsics,
           pcl::PointCloud<PointT>& cloud)
 {
-  for (const std::string& path : {color_path, depth_path})
-    if (!isReadableFile (path))
-      return fail ("loadRGBD", "cannot open '" + path + "' (missing or unreadable)", cloud);
-  const cv::Mat color = cv::imread (color_path, cv::IMREAD_COLOR);
-  if (color.empty ())
-    return fail ("loadRGBD", "'" + color_path + "' is not a readable image", cloud);
-  const cv::Mat depth = cv::imread (depth_path, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
-  if (depth.empty ())
-    return fail ("loadRGBD", "'" + depth_path + "' is not a readable image", cloud);
-  if (depth.type () != CV_16UC1)
-    return fail ("loadRGBD", "'" + depth_path + "' is not a single-channel 16-bit depth image",
-                 cloud);
+  std::vector<std::uint8_t> color_data, depth_data;
+  if (!readFile (color_path, color_data))
+    return fail ("loadRGBD", "cannot open '" + color_path + "' (missing or unreadable)", cloud);
+  if (!readFile (depth_path, depth_data))
+    return fail ("loadRGBD", "cannot open '" + depth_path + "' (missing or unreadable)", cloud);
+  cv::Mat color, depth;
+  std::string problem;
+  if (!decodeImage (color_data, false, "'" + color_path + "'", color, problem) ||
+      !decodeImage (depth_data, true, "'" + depth_path + "'", depth, problem))
+    return fail ("loadRGBD", problem, cloud);
   return rgbdToCloud (color, depth, intrinsics, cloud);
 }
 
@@ -253,6 +390,9 @@ loadRGBD (const std::string& color_path,
   template bool loadOrganizedPCD<T> (const std::string&, pcl::PointCloud<T>&);                \
   template bool rgbdToCloud<T> (const cv::Mat&, const cv::Mat&, const CameraIntrinsics&,     \
                                 pcl::PointCloud<T>&);                                         \
+  template bool decodeRGBD<T> (const std::vector<std::uint8_t>&,                              \
+                               const std::vector<std::uint8_t>&, const CameraIntrinsics&,      \
+                               pcl::PointCloud<T>&);                                           \
   template bool loadRGBD<T> (const std::string&, const std::string&, const CameraIntrinsics&, \
                              pcl::PointCloud<T>&);
 

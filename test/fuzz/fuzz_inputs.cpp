@@ -2,8 +2,6 @@
 
 #include <mid/io/organized_cloud_io.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -52,14 +50,9 @@ loadRGBDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
                  static_cast<std::size_t> (data[3]) << 24U;
   const std::size_t body = size >= 4 ? size - 4 : 0;
   color_size = std::min (color_size, body);
-  const Bytes color_bytes (data + (size - body), data + (size - body) + color_size);
-  const Bytes depth_bytes (data + (size - body) + color_size, data + size);
-  cv::Mat color, depth;
-  if (!color_bytes.empty ())
-    color = cv::imdecode (color_bytes, cv::IMREAD_COLOR);
-  if (!depth_bytes.empty ())
-    depth = cv::imdecode (depth_bytes, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
-  return io::rgbdToCloud (color, depth, {kFx, kFy, kCx, kCy, kDepthScale}, cloud);
+  const Bytes color (data + (size - body), data + (size - body) + color_size);
+  const Bytes depth (data + (size - body) + color_size, data + size);
+  return io::decodeRGBD (color, depth, {kFx, kFy, kCx, kCy, kDepthScale}, cloud);
 }
 
 Bytes

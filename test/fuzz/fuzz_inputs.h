@@ -25,8 +25,8 @@ bool
 loadPCDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud);
 
 /** \brief An RGB-D pair packed into one buffer: a 4-byte little-endian length N, N bytes of an
-  * encoded color image, then the encoded 16-bit depth image. Decoded with cv::imdecode as
-  * mid::io::loadRGBD decodes files, then turned into a cloud by mid::io::rgbdToCloud.
+  * encoded color image, then the encoded 16-bit depth image; loaded with mid::io::decodeRGBD,
+  * the in-memory path of mid::io::loadRGBD (cv::imdecode, then mid::io::rgbdToCloud).
   */
 bool
 loadRGBDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud);

@@ -5,7 +5,9 @@
 #include <opencv2/core/mat.hpp>
 #include <pcl/point_cloud.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mid {
 namespace io {
@@ -40,8 +42,26 @@ rgbdToCloud (const cv::Mat& color,
              const CameraIntrinsics& intrinsics,
              pcl::PointCloud<PointT>& cloud);
 
+/** \brief Decode a color image (PNG or JPEG) and a 16-bit depth PNG held in memory, and
+  * build the organized cloud with rgbdToCloud(), as loadRGBD() does with files.
+  *
+  * Only PNG and JPEG are decoded (whatever else OpenCV could read), and an image whose header
+  * claims more than 2^25 pixels (8K UHD fits) is refused before it is decoded.
+  * \param[in] color_data the encoded color image
+  * \param[in] depth_data the encoded depth image (values in units of depth_scale metres)
+  * \param[in] intrinsics the pinhole intrinsics and the depth scale
+  * \param[out] cloud the organized cloud; cleared when false is returned
+  * \return true on success, false (with a PCL_ERROR naming the problem) otherwise
+  */
+template <typename PointT>
+bool
+decodeRGBD (const std::vector<std::uint8_t>& color_data,
+            const std::vector<std::uint8_t>& depth_data,
+            const CameraIntrinsics& intrinsics,
+            pcl::PointCloud<PointT>& cloud);
+
 /** \brief Read a color image (PNG/JPG) and a 16-bit depth PNG and build the organized cloud
-  * with rgbdToCloud().
+  * with rgbdToCloud(), decoding them as decodeRGBD() does.
   * \param[in] color_path color image file
   * \param[in] depth_path depth image file (16-bit PNG, values in units of depth_scale metres)
   * \param[in] intrinsics the pinhole intrinsics and the depth scale

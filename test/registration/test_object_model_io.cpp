@@ -1,0 +1,132 @@
+#include <mid/registration/object_model_io.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+mid::ObjectModel
+randomModel ()
+{
+  std::mt19937 rng (8);
+  std::uniform_real_distribution<float> unit (-0.05f, 0.05f), value (0.0f, 100.0f);
+  mid::ObjectModel model;
+  for (int l = 0; l < 12; ++l) {
+    pcl::PointNormal p;
+    p.getVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), unit (rng));
+    p.getNormalVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), 1.0f).normalized ();
+    p.curvature = 0.0f;
+    model.landmarks.push_back (p);
+    for (int copy = 0; copy < 1 + l % 3; ++copy) {
+      mid::SIFTDescriptor d;
+      for (float& v : d.histogram)
+        v = value (rng);
+      model.descriptors.push_back (d);
+      model.descriptor_landmarks.push_back (l);
+    }
+  }
+  mid::updateModelDiameter (model);
+  return model;
+}
+
+class ObjectModelIO : public ::testing::Test
+{
+protected:
+  void
+  SetUp () override
+  {
+    dir_ = fs::temp_directory_path () / "mid_test_object_model_io";
+    fs::remove_all (dir_);
+    fs::create_directories (dir_);
+    path_ = (dir_ / "model.json").string ();
+    ASSERT_TRUE (mid::saveObjectModel (path_, randomModel ()));
+  }
+  void
+  TearDown () override { fs::remove_all (dir_); }
+
+  void
+  rewriteJson (const std::string& from, const std::string& to)
+  {
+    std::ifstream in (path_);
+    std::stringstream text;
+    text << in.rdbuf ();
+    in.close ();
+    std::ofstream (path_) << std::regex_replace (text.str (), std::regex (from), to);
+  }
+
+  void
+  expectRefused ()
+  {
+    mid::ObjectModel model = randomModel ();
+    EXPECT_FALSE (mid::loadObjectModel (path_, model));
+    EXPECT_TRUE (model.landmarks.empty ());
+    EXPECT_TRUE (model.descriptors.empty ());
+  }
+
+  fs::path dir_;
+  std::string path_;
+};
+
+} // namespace
+
+TEST_F (ObjectModelIO, ReloadsIdentically)
+{
+  const mid::ObjectModel original = randomModel ();
+  mid::ObjectModel loaded;
+  ASSERT_TRUE (mid::loadObjectModel (path_, loaded));
+  ASSERT_EQ (loaded.landmarks.size (), original.landmarks.size ());
+  ASSERT_EQ (loaded.descriptors.size (), original.descriptors.size ());
+  EXPECT_EQ (loaded.descriptor_landmarks, original.descriptor_landmarks);
+  for (std::size_t l = 0; l < original.landmarks.size (); ++l) {
+    EXPECT_EQ (loaded.landmarks[l].getVector3fMap (), original.landmarks[l].getVector3fMap ());
+    EXPECT_EQ (loaded.landmarks[l].getNormalVector3fMap (), original.landmarks[l].getNormalVector3fMap ());
+  }
+  for (std::size_t d = 0; d < original.descriptors.size (); ++d)
+    EXPECT_TRUE (std::equal (original.descriptors[d].histogram, original.descriptors[d].histogram + 128,
+                             loaded.descriptors[d].histogram));
+  EXPECT_NEAR (loaded.diameter, original.diameter, 1e-5f);
+  EXPECT_TRUE (fs::exists (dir_ / "model.pcd"));
+  EXPECT_EQ (std::distance (fs::directory_iterator (dir_), fs::directory_iterator ()), 2);
+}
+
+TEST_F (ObjectModelIO, RefusesMissingFiles)
+{
+  fs::remove (dir_ / "model.pcd");
+  expectRefused ();
+  fs::remove (path_);
+  expectRefused ();
+}
+
+TEST_F (ObjectModelIO, RefusesATruncatedDataFile)
+{
+  fs::resize_file (dir_ / "model.pcd", fs::file_size (dir_ / "model.pcd") / 2);
+  expectRefused ();
+}
+
+TEST_F (ObjectModelIO, RefusesAnotherVersionOrFormat)
+{
+  rewriteJson ("\"version\": 1", "\"version\": 2");
+  expectRefused ();
+  rewriteJson ("\"version\": 2", "\"version\": 1");
+  rewriteJson ("mid-object-model", "something-else");
+  expectRefused ();
+}
+
+TEST_F (ObjectModelIO, RefusesATruncatedHeader)
+{
+  rewriteJson ("\"descriptors\": [0-9]+,\\s*\"diameter\": [0-9.e-]+", "");
+  expectRefused ();
+}
+
+TEST (ObjectModelIOWrite, RefusesBadPaths)
+{
+  EXPECT_FALSE (mid::saveObjectModel ("/nonexistent_mid_folder/model.json", randomModel ()));
+  EXPECT_FALSE (mid::saveObjectModel ((fs::temp_directory_path () / "model.txt").string (), randomModel ()));
+}
