@@ -2,6 +2,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
@@ -176,6 +177,38 @@ readQuietly (ReadFunction read)
   }
 }
 
+/** PCL's reader can return point data that disagrees with its own header, and
+  * pcl::fromPCLPointCloud2 trusts the header; so the layout is checked before converting. Found
+  * by fuzzing: a damaged SIZE line gave 16-byte points over data read as 12-byte points (a heap
+  * overflow), and WIDTH 0 made the conversion bind a reference to the null data of an empty
+  * cloud (undefined behaviour).
+  */
+bool
+hasConsistentLayout (const pcl::PCLPointCloud2& blob, std::string& problem)
+{
+  for (const auto& field : blob.fields) {
+    const std::uint64_t size = pcl::getFieldSize (field.datatype);
+    const std::uint64_t count = std::max<std::uint64_t> (field.count, 1);
+    if (size == 0 || std::uint64_t{field.offset} + size * count > blob.point_step) {
+      problem = "field '" + field.name + "' does not fit into a point of " +
+                std::to_string (blob.point_step) + " bytes";
+      return false;
+    }
+  }
+  if (blob.width == 0 || blob.height == 0) { // fromPCLPointCloud2 would take &cloud[0] of nothing
+    problem = "it holds no points (width " + std::to_string (blob.width) + ", height " +
+              std::to_string (blob.height) + ")";
+    return false;
+  }
+  const std::uint64_t row_bytes = std::uint64_t{blob.width} * blob.point_step;
+  if (blob.row_step < row_bytes || std::uint64_t{blob.row_step} * blob.height > blob.data.size ()) {
+    problem = "it holds " + std::to_string (blob.data.size ()) + " bytes of points, less than the " +
+              std::to_string (row_bytes * blob.height) + " its header announces";
+    return false;
+  }
+  return true;
+}
+
 bool
 hasField (const pcl::PCLPointCloud2& header, const std::string& name)
 {
@@ -260,11 +293,22 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
-  status = readQuietly ([&] { return reader.read (path, cloud); });
+  pcl::PCLPointCloud2 blob;
+  status = readQuietly ([&] {
+    return reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version);
+  });
   if (status < 0)
     return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);
   std::string problem;
+  if (!hasConsistentLayout (blob, problem))
+    return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
+  status = readQuietly ([&] {
+    pcl::fromPCLPointCloud2 (blob, cloud);
+    return 0;
+  });
+  if (status < 0)
+    return fail ("loadOrganizedPCD", "'" + path + "' could not be converted (out of memory)", cloud);
   if (!checkOrganizedCloud (cloud, problem))
     return fail ("loadOrganizedPCD", "'" + path + "': " + problem, cloud);
   return true;

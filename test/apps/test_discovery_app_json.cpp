@@ -2,6 +2,7 @@
 // all-or-nothing writing.
 
 #include "app_runner.h"
+#include "temporary_folder.h"
 #include "two_copies_scene.h"
 
 #include <gtest/gtest.h>
@@ -47,9 +48,8 @@ inside (const std::vector<double>& box, const cv::Rect& rect, double margin)
 
 TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
 {
-  const fs::path dir = fs::temp_directory_path () / "mid_test_app_json";
-  fs::remove_all (dir);
-  fs::create_directories (dir);
+  const mid::test::TemporaryFolder folder;
+  const fs::path& dir = folder.path ();
   const auto scene = mid::test::makeTwoCopiesScene ();
   ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string (), *scene.cloud), 0);
   const auto result = mid::test::runCommand (std::string (MID_DISCOVERY_APP) + " " +
@@ -68,14 +68,12 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
   const bool first_is_a = inside (found[0], scene.rect_a, 12.0);
   EXPECT_TRUE (first_is_a || inside (found[0], scene.rect_b, 12.0));
   EXPECT_TRUE (inside (found[1], first_is_a ? scene.rect_b : scene.rect_a, 12.0));
-  fs::remove_all (dir);
 }
 
 TEST (DiscoveryAppJson, AMissingOutputFolderFailsBeforeTheWorkAndWritesNothing)
 {
-  const fs::path dir = fs::temp_directory_path () / "mid_test_app_json_missing";
-  fs::remove_all (dir);
-  fs::create_directories (dir);
+  const mid::test::TemporaryFolder folder;
+  const fs::path& dir = folder.path ();
   const auto scene = mid::test::makeTwoCopiesScene ();
   ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string (), *scene.cloud), 0);
   const auto result = mid::test::runCommand (std::string (MID_DISCOVERY_APP) + " " +
@@ -85,6 +83,5 @@ TEST (DiscoveryAppJson, AMissingOutputFolderFailsBeforeTheWorkAndWritesNothing)
   EXPECT_NE (result.exit_code, 0);
   EXPECT_NE (result.output.find ("missing or not writable"), std::string::npos) << result.output;
   EXPECT_EQ (result.output.find ("keypoints:"), std::string::npos); // no work was done
-  EXPECT_EQ (std::distance (fs::directory_iterator (dir), fs::directory_iterator ()), 1);
-  fs::remove_all (dir);
+  EXPECT_EQ (folder.entries (), 1u);
 }

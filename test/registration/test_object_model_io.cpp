@@ -1,3 +1,5 @@
+#include "temporary_folder.h"
+
 #include <mid/registration/object_model_io.h>
 
 #include <gtest/gtest.h>
@@ -42,14 +44,9 @@ protected:
   void
   SetUp () override
   {
-    dir_ = fs::temp_directory_path () / "mid_test_object_model_io";
-    fs::remove_all (dir_);
-    fs::create_directories (dir_);
-    path_ = (dir_ / "model.json").string ();
+    path_ = folder_.file ("model.json");
     ASSERT_TRUE (mid::saveObjectModel (path_, randomModel ()));
   }
-  void
-  TearDown () override { fs::remove_all (dir_); }
 
   void
   rewriteJson (const std::string& from, const std::string& to)
@@ -70,7 +67,8 @@ protected:
     EXPECT_TRUE (model.descriptors.empty ());
   }
 
-  fs::path dir_;
+  mid::test::TemporaryFolder folder_;
+  const fs::path& dir_ = folder_.path ();
   std::string path_;
 };
 
@@ -93,7 +91,7 @@ TEST_F (ObjectModelIO, ReloadsIdentically)
                              loaded.descriptors[d].histogram));
   EXPECT_NEAR (loaded.diameter, original.diameter, 1e-5f);
   EXPECT_TRUE (fs::exists (dir_ / "model.pcd"));
-  EXPECT_EQ (std::distance (fs::directory_iterator (dir_), fs::directory_iterator ()), 2);
+  EXPECT_EQ (folder_.entries (), 2u);
 }
 
 TEST_F (ObjectModelIO, RefusesMissingFiles)
@@ -128,5 +126,7 @@ TEST_F (ObjectModelIO, RefusesATruncatedHeader)
 TEST (ObjectModelIOWrite, RefusesBadPaths)
 {
   EXPECT_FALSE (mid::saveObjectModel ("/nonexistent_mid_folder/model.json", randomModel ()));
-  EXPECT_FALSE (mid::saveObjectModel ((fs::temp_directory_path () / "model.txt").string (), randomModel ()));
+  const mid::test::TemporaryFolder folder;
+  EXPECT_FALSE (mid::saveObjectModel (folder.file ("model.txt"), randomModel ()));
+  EXPECT_EQ (folder.entries (), 0u);
 }
