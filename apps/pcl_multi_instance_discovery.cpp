@@ -2,39 +2,32 @@
 // frame, model them, and localize every instance (Abbeloos et al., 3DV 2017). Prints counts,
 // objects and the time of each stage; -json writes the result (doc/result_format.md).
 
+#include "app_support.h"
+
 #include <mid/discovery/multi_instance_discovery.h>
-#include <mid/discovery/result_json.h>
-#include <mid/io/organized_cloud_io.h>
-#include <mid/io/staged_files.h>
-#include <mid/registration/object_model_io.h>
 
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/point_types.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
 using pcl::console::print_error;
-using pcl::console::print_highlight;
 using pcl::console::print_info;
 using pcl::console::print_value;
 
 namespace {
 
-using PointT = pcl::PointXYZRGBA;
+using mid::apps::PointT;
 
 /** Everything the command line sets, with the library's defaults. */
 struct Options
 {
-  std::string pcd_path;
-  std::string color_path;
-  std::string depth_path;
+  mid::apps::SceneInput scene;
   std::string json_path;
   std::string model_prefix;
-  mid::io::CameraIntrinsics intrinsics;
   mid::DiscoveryParameters parameters;
 };
 
@@ -46,12 +39,7 @@ printHelp (const char* program)
   print_info ("Usage: %s SCENE.pcd [options]\n", program);
   print_info ("   or: %s -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C [options]\n\n",
               program);
-  print_info ("Input:\n");
-  print_info ("  SCENE.pcd           organized PCD with x y z rgb(a), metres\n");
-  print_info ("  -rgb FILE           color image (PNG/JPG), with -depth\n");
-  print_info ("  -depth FILE         16-bit depth PNG registered to the color image\n");
-  print_info ("  -fx -fy -cx -cy     pinhole intrinsics in pixels (required with -rgb)\n");
-  print_info ("  -depth_scale S      metres per depth unit (default 0.001)\n");
+  mid::apps::printSceneInputHelp ();
   print_info ("Output:\n");
   print_info ("  -json FILE          write the result as JSON (no window, no display needed)\n");
   print_info ("  -models PREFIX      write each object's model as PREFIX<id>.json + PREFIX<id>.pcd\n");
@@ -94,32 +82,8 @@ bool
 parseOptions (int argc, char** argv, Options& options)
 {
   using pcl::console::parse_argument;
-  const std::vector<int> pcd_indices = pcl::console::parse_file_extension_argument (argc, argv, ".pcd");
-  parse_argument (argc, argv, "-rgb", options.color_path);
-  parse_argument (argc, argv, "-depth", options.depth_path);
-  const bool rgbd = !options.color_path.empty () || !options.depth_path.empty ();
-  if (pcd_indices.size () + (rgbd ? 1 : 0) != 1) {
-    print_error ("Give exactly one input: one SCENE.pcd, or -rgb and -depth.\n");
+  if (!mid::apps::parseSceneInput (argc, argv, options.scene))
     return false;
-  }
-  if (rgbd) {
-    if (options.color_path.empty () || options.depth_path.empty ()) {
-      print_error ("-rgb and -depth must be given together.\n");
-      return false;
-    }
-    const bool has_intrinsics = parse_argument (argc, argv, "-fx", options.intrinsics.fx) >= 0 &&
-                                parse_argument (argc, argv, "-fy", options.intrinsics.fy) >= 0 &&
-                                parse_argument (argc, argv, "-cx", options.intrinsics.cx) >= 0 &&
-                                parse_argument (argc, argv, "-cy", options.intrinsics.cy) >= 0;
-    if (!has_intrinsics) {
-      print_error ("-rgb/-depth input needs the intrinsics -fx -fy -cx -cy.\n");
-      return false;
-    }
-    parse_argument (argc, argv, "-depth_scale", options.intrinsics.depth_scale);
-  }
-  else
-    options.pcd_path = argv[pcd_indices.front ()];
-
   mid::DiscoveryParameters& p = options.parameters;
   parse_argument (argc, argv, "-json", options.json_path);
   parse_argument (argc, argv, "-models", options.model_prefix);
@@ -159,14 +123,6 @@ parseOptions (int argc, char** argv, Options& options)
   return true;
 }
 
-bool
-loadScene (const Options& options, pcl::PointCloud<PointT>& cloud)
-{
-  if (!options.pcd_path.empty ())
-    return mid::io::loadOrganizedPCD (options.pcd_path, cloud);
-  return mid::io::loadRGBD (options.color_path, options.depth_path, options.intrinsics, cloud);
-}
-
 } // namespace
 
 int
@@ -183,16 +139,11 @@ main (int argc, char** argv)
 
   pcl::StopWatch watch;
   auto cloud = pcl::make_shared<pcl::PointCloud<PointT>> ();
-  if (!loadScene (options, *cloud))
+  if (!mid::apps::loadScene (options.scene, *cloud))
     return 1;
   const double load_ms = watch.getTime ();
-
-  // Stage the outputs before the work: a missing or unwritable folder fails now, not after it.
-  mid::io::StagedFiles outputs;
-  std::string json_temporary;
-  if (!options.json_path.empty () && (json_temporary = outputs.stage (options.json_path)).empty ())
-    return 1;
-  if (!options.model_prefix.empty () && mid::io::StagedFiles ().stage (options.model_prefix + "0.json").empty ())
+  mid::apps::ResultFiles outputs;
+  if (!outputs.stage (options.json_path, options.model_prefix))
     return 1;
 
   mid::MultiInstanceDiscovery<PointT> discovery;
@@ -201,49 +152,8 @@ main (int argc, char** argv)
   mid::DiscoveryResult result;
   if (!discovery.discover (result))
     return 1;
-
-  print_highlight ("Scene: ");
-  print_value ("%u x %u", cloud->width, cloud->height);
-  print_info (" points\nkeypoints: ");
-  print_value ("%zu", result.keypoints->size ());
-  print_info (" (valid depth and normal)\nmatches:   ");
-  print_value ("%zu", result.matches.size ());
-  print_info ("\ntriplets:  ");
-  print_value ("%zu", result.triplets);
-  print_info ("\nclusters:  ");
-  print_value ("%zu", result.clusters);
-  print_info ("\nobjects:   ");
-  print_value ("%zu", result.models.size ());
-  print_info ("\n");
-  for (std::size_t m = 0; m < result.models.size (); ++m) {
-    print_info ("  object %zu: ", m);
-    print_value ("%zu", result.models[m].instances.size ());
-    print_info (" instances, %zu landmarks, diameter %.3f m\n", result.models[m].landmarks.size (),
-                static_cast<double> (result.models[m].diameter));
-  }
-  print_info ("timing_ms: load ");
-  print_value ("%.1f", load_ms);
-  for (const auto& [stage, ms] : result.timing_ms) {
-    print_info (", %s ", stage.c_str ());
-    print_value ("%.1f", ms);
-  }
-  print_info ("\n");
-
-  for (std::size_t m = 0; !options.model_prefix.empty () && m < result.models.size (); ++m)
-    if (!mid::saveObjectModel (options.model_prefix + std::to_string (m) + ".json", result.models[m],
-                               &outputs))
-      return 1;
-  if (!options.json_path.empty ()) {
-    std::ofstream json (json_temporary);
-    json << mid::formatDiscoveryJson (result, options.pcd_path.empty () ? options.color_path
-                                                                        : options.pcd_path);
-    json.close ();
-    if (!json) {
-      print_error ("Could not write '%s'.\n", options.json_path.c_str ());
-      return 1;
-    }
-  }
-  if (!outputs.commit ())
+  mid::apps::printResult (*cloud, result, load_ms);
+  if (!outputs.write (result, options.scene.name ()))
     return 1;
   return 0;
 }

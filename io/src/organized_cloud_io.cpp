@@ -12,9 +12,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <locale>
+#include <sstream>
 #include <vector>
 
 namespace mid {
@@ -139,6 +143,111 @@ isEmptyFile (const std::string& path)
 {
   std::ifstream file (path, std::ios::binary | std::ios::ate);
   return file.tellg () <= 0;
+}
+
+/** LZF, the compression of binary_compressed PCD files, turns 3 bytes into at most 264. */
+constexpr std::uint64_t kMaxCompressionRatio = 100;
+
+bool
+startsWithKeyword (const std::string& token, const char* keyword)
+{
+  return token.compare (0, std::char_traits<char>::length (keyword), keyword) == 0;
+}
+
+/** PCL's PCDReader::readHeader allocates the point data (points x point step bytes) as soon as
+  * it reads the POINTS line, before it compares anything with the file size: a 160-byte header
+  * made it allocate and zero 4 GiB. This scan reads the header the way PCL does (a line counts
+  * while it starts with a header keyword, also after DATA) and refuses a header that announces
+  * more point data than even a compressed body of this file could hold. The point step is
+  * bounded from above by 8 bytes per value.
+  */
+bool
+announcesPlausibleSize (const std::string& path, std::uint64_t file_size, std::string& problem)
+{
+  static const char* const kKeywords[] = {"VERSION", "SIZE",      "TYPE",   "WIDTH", "HEIGHT",
+                                          "VIEWPOINT", "DATA"};
+  std::ifstream file (path, std::ios::binary);
+  std::string line;
+  std::uint64_t values = 0, points = 0;
+  while (std::getline (file, line)) {
+    if (line.empty ())
+      continue;
+    std::istringstream tokens (line);
+    tokens.imbue (std::locale::classic ());
+    std::string keyword;
+    if (!(tokens >> keyword))
+      break;
+    if (keyword[0] == '#')
+      continue;
+    if (startsWithKeyword (keyword, "FIELDS") || startsWithKeyword (keyword, "COLUMNS") ||
+        startsWithKeyword (keyword, "COUNT")) {
+      const bool counts = startsWithKeyword (keyword, "COUNT");
+      std::uint64_t sum = 0;
+      std::string token;
+      while (tokens >> token) {
+        // A count PCL cannot read as a number makes it throw; bound it by its digits.
+        const auto count = std::strtoull (token.c_str (), nullptr, 10);
+        sum += counts ? std::min<std::uint64_t> (count, std::uint64_t{1} << 32U) : 1;
+      }
+      values = std::max (values, sum);
+      continue;
+    }
+    if (startsWithKeyword (keyword, "POINTS")) {
+      std::string token;
+      if (tokens >> token)
+        points = std::max<std::uint64_t> (
+            points, std::min<std::uint64_t> (std::strtoull (token.c_str (), nullptr, 10),
+                                             std::numeric_limits<std::uint32_t>::max ()));
+      continue;
+    }
+    if (std::none_of (std::begin (kKeywords), std::end (kKeywords),
+                      [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
+      break;
+  }
+  const std::uint64_t announced = points * 8 * std::min<std::uint64_t> (values, std::uint64_t{1} << 24U);
+  if (announced > kMaxCompressionRatio * file_size) {
+    problem = "its header announces " + std::to_string (points) + " points of " +
+              std::to_string (values) + " values, far more than " + std::to_string (file_size) +
+              " bytes can hold";
+    return false;
+  }
+  return true;
+}
+
+/** A binary_compressed body starts with its compressed and uncompressed sizes; PCL only warns
+  * when the uncompressed size disagrees with the header and then reads past its buffer (a heap
+  * overflow found by fuzzing), so both sizes are checked first.
+  */
+bool
+hasPlausibleCompressedBody (const std::string& path,
+                            std::uint64_t file_size,
+                            std::uint64_t body_offset,
+                            std::uint64_t expected_size,
+                            std::string& problem)
+{
+  std::array<unsigned char, 8> sizes{};
+  std::ifstream file (path, std::ios::binary);
+  file.seekg (static_cast<std::streamoff> (body_offset));
+  if (body_offset + sizes.size () > file_size ||
+      !file.read (reinterpret_cast<char*> (sizes.data ()), sizes.size ())) {
+    problem = "its compressed body is missing";
+    return false;
+  }
+  const auto little_endian = [&sizes] (std::size_t at) {
+    return std::uint64_t{sizes[at]} | std::uint64_t{sizes[at + 1]} << 8U |
+           std::uint64_t{sizes[at + 2]} << 16U | std::uint64_t{sizes[at + 3]} << 24U;
+  };
+  const std::uint64_t compressed = little_endian (0), uncompressed = little_endian (4);
+  if (body_offset + sizes.size () + compressed > file_size) {
+    problem = "its compressed body is truncated";
+    return false;
+  }
+  if (uncompressed != expected_size) {
+    problem = "its compressed body holds " + std::to_string (uncompressed) +
+              " bytes of points, its header announces " + std::to_string (expected_size);
+    return false;
+  }
+  return true;
 }
 
 /** Silences PCL's own console output while it lives: the PCD reader reports problems on several
@@ -271,6 +380,11 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
 
   if (isEmptyFile (path))
     return fail ("loadOrganizedPCD", "'" + path + "' is empty", cloud);
+  std::error_code error;
+  const std::uint64_t file_size = std::filesystem::file_size (path, error);
+  std::string problem;
+  if (error || !announcesPlausibleSize (path, file_size, problem))
+    return fail ("loadOrganizedPCD", "'" + path + "' is not a valid PCD file: " + problem, cloud);
 
   pcl::PCDReader reader;
   pcl::PCLPointCloud2 header;
@@ -293,6 +407,13 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
+  constexpr int kBinaryCompressed = 2; // PCL's data_type for DATA binary_compressed
+  const std::uint64_t expected_size =
+      std::uint64_t{header.width} * header.height * header.point_step;
+  if (data_type == kBinaryCompressed &&
+      !hasPlausibleCompressedBody (path, file_size, data_index, expected_size, problem))
+    return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
+
   pcl::PCLPointCloud2 blob;
   status = readQuietly ([&] {
     return reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version);
@@ -300,7 +421,6 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   if (status < 0)
     return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);
-  std::string problem;
   if (!hasConsistentLayout (blob, problem))
     return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
   status = readQuietly ([&] {

@@ -142,7 +142,8 @@ loadObjectModel (const std::string& path, ObjectModel& model)
   }
   if (rows.size () != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
     return fail ("'" + data_path + "' holds " + std::to_string (rows.size ()) +
-                     " descriptors, the header says " + std::to_string (static_cast<long> (descriptors)),
+                     " descriptors, the header says " + std::to_string (static_cast<long> (descriptors)) +
+                     " (truncated or inconsistent)",
                  model);
   model.landmarks.resize (static_cast<std::size_t> (landmarks));
   std::vector<bool> seen (model.landmarks.size (), false);

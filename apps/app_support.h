@@ -1,0 +1,72 @@
+#pragma once
+
+// What the command-line apps share: reading the scene from the command line, printing a
+// result, and writing the result JSON and model files all-or-nothing.
+
+#include <mid/discovery/discovery_result.h>
+#include <mid/io/camera_intrinsics.h>
+#include <mid/io/staged_files.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <string>
+
+namespace mid {
+namespace apps {
+
+using PointT = pcl::PointXYZRGBA;
+
+/** \brief The scene of a command line: an organized PCD, or color + depth + intrinsics. */
+struct SceneInput
+{
+  std::string pcd_path;
+  std::string color_path;
+  std::string depth_path;
+  io::CameraIntrinsics intrinsics;
+
+  /** \brief The file that names the scene (the PCD or the color image). */
+  const std::string&
+  name () const { return pcd_path.empty () ? color_path : pcd_path; }
+};
+
+/** \brief Print the help lines of the scene options. */
+void
+printSceneInputHelp ();
+
+/** \brief Read the scene options; false after a one-line error if they are unusable. */
+bool
+parseSceneInput (int argc, char** argv, SceneInput& input);
+
+/** \brief Load the scene; false after a one-line error (PCL_ERROR) if it is unusable. */
+bool
+loadScene (const SceneInput& input, pcl::PointCloud<PointT>& cloud);
+
+/** \brief The files an app writes: the result JSON and, optionally, one model file pair per
+  * object. They are staged before the work, so that a missing or unwritable folder fails at once,
+  * and committed together at the end.
+  */
+class ResultFiles
+{
+public:
+  /** \brief Stage the outputs; false after a one-line error if a folder is unusable. */
+  bool
+  stage (const std::string& json_path, const std::string& model_prefix);
+
+  /** \brief Write and commit everything; false after a one-line error. */
+  bool
+  write (const DiscoveryResult& result, const std::string& input_name);
+
+private:
+  io::StagedFiles files_;
+  std::string json_path_;
+  std::string json_temporary_;
+  std::string model_prefix_;
+};
+
+/** \brief Print the counts, objects and timings of a result. */
+void
+printResult (const pcl::PointCloud<PointT>& cloud, const DiscoveryResult& result, double load_ms);
+
+} // namespace apps
+} // namespace mid

@@ -1,0 +1,152 @@
+// pcl_multi_instance_detect: find every instance of a previously discovered object model in a new
+// RGB-D frame, also when only one instance is present. Same result format as discovery.
+
+#include "app_support.h"
+
+#include <mid/features/sift_keypoint_extractor.h>
+#include <mid/registration/model_instance_detector.h>
+#include <mid/registration/object_model_io.h>
+
+#include <pcl/common/time.h>
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+
+#include <string>
+
+using pcl::console::print_error;
+using pcl::console::print_info;
+using pcl::console::print_value;
+
+namespace {
+
+using mid::apps::PointT;
+
+/** Everything the command line sets. */
+struct Options
+{
+  std::string model_path;
+  mid::apps::SceneInput scene;
+  std::string json_path;
+  float max_descriptor_distance = 200.0f;
+  float inlier_threshold = 0.005f;
+  int min_inliers = 5;
+  float min_inlier_ratio = 0.125f;
+  int iterations = 1000;
+  unsigned seed = 0;
+};
+
+void
+printHelp (const char* program)
+{
+  const Options d;
+  print_info ("Find the instances of a discovered object model in a new RGB-D frame.\n\n");
+  print_info ("Usage: %s MODEL.json SCENE.pcd [options]\n", program);
+  print_info ("   or: %s MODEL.json -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C\n\n",
+              program);
+  print_info ("  MODEL.json          a model written by pcl_multi_instance_discovery -models\n");
+  mid::apps::printSceneInputHelp ();
+  print_info ("Output:\n  -json FILE          write the result as JSON (same format as discovery)\n");
+  print_info ("Parameters:\n");
+  const auto line = [] (const char* option, const char* meaning, double value) {
+    print_info ("  %-19s %s (default ", option, meaning);
+    print_value ("%g", value);
+    print_info (")\n");
+  };
+  line ("-max_desc_dist D", "largest SIFT descriptor distance of a match",
+        static_cast<double> (d.max_descriptor_distance));
+  line ("-inlier D", "RANSAC inlier threshold, metres", static_cast<double> (d.inlier_threshold));
+  line ("-min_inliers N", "RANSAC minimum inliers", d.min_inliers);
+  line ("-min_ratio R", "RANSAC minimum inlier ratio", static_cast<double> (d.min_inlier_ratio));
+  line ("-iterations N", "RANSAC hypotheses per detection", d.iterations);
+  line ("-seed S", "seed of the random draws", d.seed);
+}
+
+bool
+parseOptions (int argc, char** argv, Options& options)
+{
+  using pcl::console::parse_argument;
+  for (int i = 1; i < argc && options.model_path.empty (); ++i) {
+    const std::string argument = argv[i];
+    if (argument.size () > 5 && argument.compare (argument.size () - 5, 5, ".json") == 0 &&
+        std::string (argv[i - 1]) != "-json")
+      options.model_path = argument;
+  }
+  if (options.model_path.empty ()) {
+    print_error ("Give the model file MODEL.json first.\n");
+    return false;
+  }
+  if (!mid::apps::parseSceneInput (argc, argv, options.scene))
+    return false;
+  parse_argument (argc, argv, "-json", options.json_path);
+  parse_argument (argc, argv, "-max_desc_dist", options.max_descriptor_distance);
+  parse_argument (argc, argv, "-inlier", options.inlier_threshold);
+  parse_argument (argc, argv, "-min_inliers", options.min_inliers);
+  parse_argument (argc, argv, "-min_ratio", options.min_inlier_ratio);
+  parse_argument (argc, argv, "-iterations", options.iterations);
+  parse_argument (argc, argv, "-seed", options.seed);
+  if (options.min_inliers < 3) {
+    print_error ("Invalid parameter: min_inliers is %d, must be >= 3.\n", options.min_inliers);
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  if (argc < 2 || pcl::console::find_switch (argc, argv, "-h") ||
+      pcl::console::find_switch (argc, argv, "--help")) {
+    printHelp (argv[0]);
+    return argc < 2 ? 1 : 0;
+  }
+  Options options;
+  if (!parseOptions (argc, argv, options))
+    return 1;
+
+  pcl::StopWatch watch;
+  auto model = std::make_shared<mid::ObjectModel> ();
+  if (!mid::loadObjectModel (options.model_path, *model))
+    return 1;
+  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>> ();
+  if (!mid::apps::loadScene (options.scene, *cloud))
+    return 1;
+  const double load_ms = watch.getTime ();
+  mid::apps::ResultFiles outputs;
+  if (!outputs.stage (options.json_path, ""))
+    return 1;
+
+  pcl::StopWatch total;
+  watch.reset ();
+  mid::DiscoveryResult result;
+  mid::SIFTKeypointExtractor<PointT> extractor;
+  extractor.setInputCloud (cloud);
+  result.keypoints = pcl::make_shared<mid::KeypointCloud> ();
+  result.descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  if (!extractor.compute (*result.keypoints, *result.descriptors))
+    return 1;
+  result.image_keypoints = extractor.getImageKeypoints ();
+  result.timing_ms.emplace_back ("features", watch.getTime ());
+
+  watch.reset ();
+  mid::ModelInstanceDetector detector;
+  detector.setModel (model);
+  detector.setInputKeypoints (result.keypoints);
+  detector.setInputDescriptors (result.descriptors);
+  detector.setMaxDescriptorDistance (options.max_descriptor_distance);
+  detector.setInlierThreshold (options.inlier_threshold);
+  detector.setMinInliers (static_cast<std::size_t> (options.min_inliers));
+  detector.setMinInlierRatio (options.min_inlier_ratio);
+  detector.setMaxIterations (options.iterations);
+  detector.setSeed (options.seed);
+  if (!detector.detect (model->instances))
+    return 1;
+  result.timing_ms.emplace_back ("detection", watch.getTime ());
+  result.timing_ms.emplace_back ("total", total.getTime ());
+  if (!model->instances.empty ())
+    result.models.push_back (*model);
+
+  mid::apps::printResult (*cloud, result, load_ms);
+  return outputs.write (result, options.scene.name ()) ? 0 : 1;
+}
