@@ -9,6 +9,7 @@ cd "$(dirname "$0")"
 
 PACKAGES=(cmake g++ make pkg-config libpcl-dev libopencv-dev libvtk9-dev libeigen3-dev
           libflann-dev libboost-dev libboost-graph-dev libgtest-dev libbenchmark-dev
+          nlohmann-json3-dev
           xvfb xauth clang-14 libclang-rt-14-dev clang-tidy-14 clang-format-14)
 BUILD_DIR=${MID_BUILD_DIR:-build}
 ASAN_BUILD_DIR=${MID_ASAN_BUILD_DIR:-build-asan}

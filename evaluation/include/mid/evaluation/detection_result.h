@@ -1,0 +1,49 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include <string>
+#include <vector>
+
+namespace mid {
+namespace evaluation {
+
+/** \brief One instance as our result JSON reports it. */
+struct DetectedInstance
+{
+  /** \brief Model -> camera pose, metres. */
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
+  /** \brief Pixel positions of its keypoints. */
+  std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>> keypoints;
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+/** \brief One discovered object: its instances. */
+struct DetectedObject
+{
+  std::vector<DetectedInstance, Eigen::aligned_allocator<DetectedInstance>> instances;
+};
+
+/** \brief What a result JSON (doc/result_format.md) says about one frame. */
+struct DetectionResult
+{
+  std::vector<DetectedObject> objects;
+  /** \brief timing_ms.total, or -1 if absent. */
+  double total_ms = -1.0;
+  /** \brief timing_ms.features, or -1 if absent. */
+  double features_ms = -1.0;
+};
+
+/** \brief Read a result JSON written by pcl_multi_instance_discovery or _detect.
+  * \param[in] path the file
+  * \param[out] result its objects, instances and timings; cleared on failure
+  * \return false (with a PCL_ERROR) if the file is missing, not JSON, of another format or of a
+  * version this build does not read
+  */
+bool
+readDetectionResult (const std::string& path, DetectionResult& result);
+
+} // namespace evaluation
+} // namespace mid

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <mid/evaluation/detection_result.h>
+#include <mid/evaluation/ground_truth.h>
+
+#include <vector>
+
+namespace mid {
+namespace evaluation {
+
+/** \brief How one frame's result scores against its annotations, by the rules of Abbeloos et
+  * al. (3DV 2017, Sec. 4.2); see scoreFrame().
+  */
+struct FrameScore
+{
+  /** \brief Counted on instances. */
+  int instance_tp = 0;
+  int instance_fp = 0;
+  int instance_fn = 0;
+  /** \brief Counted on pairs (one per repeated object type). */
+  int pair_tp = 0;
+  int pair_fp = 0;
+  int pair_fn = 0;
+  /** \brief True if every repeated object type has exactly two instances (the paper's subset
+    * for pair scores).
+    */
+  bool pairs_only = false;
+  /** \brief Relative pose errors between correctly detected instances of one object: rotation
+    * (degrees) and translation (millimetres, at the first instance's object origin).
+    */
+  std::vector<double> rotation_errors_deg;
+  std::vector<double> translation_errors_mm;
+};
+
+/** \brief Score one frame.
+  *
+  * An instance is correct if at least `min_inside` (the paper: 90 %) of its keypoints lie on
+  * one annotated instance (its visible mask, or its visible box without a mask). Each object
+  * takes the type most of its correct instances lie on. An object with no correct instance, an
+  * object of a type annotated only once, and a second object of an already found type are
+  * false positives with all their instances. Within a valid object, a correct instance on a new
+  * annotated instance of its type is a true positive, anything else (wrong place, a second
+  * detection of one instance) a false positive. Instances of repeated types (two or more
+  * annotated) that no true positive found are false negatives; objects that appear once are not
+  * expected to be found. On pairs: a valid object with two or more true positives is a true
+  * positive pair, any other object a false positive, and a repeated type without one a false
+  * negative.
+  */
+FrameScore
+scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double min_inside = 0.9);
+
+} // namespace evaluation
+} // namespace mid

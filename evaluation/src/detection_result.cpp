@@ -1,0 +1,55 @@
+#include <mid/evaluation/detection_result.h>
+
+#include <nlohmann/json.hpp>
+#include <pcl/console/print.h>
+
+#include <fstream>
+
+namespace mid {
+namespace evaluation {
+
+bool
+readDetectionResult (const std::string& path, DetectionResult& result)
+{
+  result = DetectionResult ();
+  std::ifstream file (path);
+  if (!file) {
+    PCL_ERROR ("[mid::evaluation::readDetectionResult] cannot open '%s'\n", path.c_str ());
+    return false;
+  }
+  try {
+    nlohmann::json document;
+    file >> document;
+    if (document.value ("format", std::string ()) != "mid-discovery-result")
+      throw std::runtime_error ("not a mid discovery result (format)");
+    if (document.value ("version", 0) != 1)
+      throw std::runtime_error ("result version " + std::to_string (document.value ("version", 0)) +
+                                ", this build reads version 1");
+    const auto& timing = document.at ("timing_ms");
+    result.total_ms = timing.value ("total", -1.0);
+    result.features_ms = timing.value ("features", -1.0);
+    for (const auto& object : document.at ("objects")) {
+      DetectedObject detected;
+      for (const auto& instance : object.at ("instances")) {
+        DetectedInstance d;
+        const auto& pose = instance.at ("pose");
+        for (int r = 0; r < 4; ++r)
+          for (int c = 0; c < 4; ++c)
+            d.pose (r, c) = pose.at (static_cast<std::size_t> (r)).at (static_cast<std::size_t> (c)).get<float> ();
+        for (const auto& uv : instance.at ("keypoints"))
+          d.keypoints.emplace_back (uv.at (0).get<float> (), uv.at (1).get<float> ());
+        detected.instances.push_back (d);
+      }
+      result.objects.push_back (detected);
+    }
+  }
+  catch (const std::exception& error) {
+    PCL_ERROR ("[mid::evaluation::readDetectionResult] '%s': %s\n", path.c_str (), error.what ());
+    result = DetectionResult ();
+    return false;
+  }
+  return true;
+}
+
+} // namespace evaluation
+} // namespace mid
