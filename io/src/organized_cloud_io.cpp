@@ -286,14 +286,17 @@ readQuietly (ReadFunction read)
   }
 }
 
-/** PCL's reader can return point data that disagrees with its own header, and
-  * pcl::fromPCLPointCloud2 trusts the header; so the layout is checked before converting. Found
-  * by fuzzing: a damaged SIZE line gave 16-byte points over data read as 12-byte points (a heap
-  * overflow), and WIDTH 0 made the conversion bind a reference to the null data of an empty
-  * cloud (undefined behaviour).
+/** PCL's reader trusts its header: the point data is allocated when the POINTS line is read,
+  * with the point step known at that moment, and later lines may change the fields; the body
+  * is then written (and pcl::fromPCLPointCloud2 reads it) with the final offsets. So the layout
+  * of the header (rows: false) and of the data read (rows: true, as the conversion walks it by
+  * row_step) is checked before either step. Found by fuzzing: a damaged SIZE line gave 16-byte
+  * points over data read as 12-byte points (a heap overflow in the conversion), other headers
+  * made PCL's body reader write past the data (heap corruption), and WIDTH 0 made the
+  * conversion bind a reference to the data of an empty cloud (undefined behaviour).
   */
 bool
-hasConsistentLayout (const pcl::PCLPointCloud2& blob, std::string& problem)
+hasConsistentLayout (const pcl::PCLPointCloud2& blob, bool rows, std::string& problem)
 {
   for (const auto& field : blob.fields) {
     const std::uint64_t size = pcl::getFieldSize (field.datatype);
@@ -310,7 +313,8 @@ hasConsistentLayout (const pcl::PCLPointCloud2& blob, std::string& problem)
     return false;
   }
   const std::uint64_t row_bytes = std::uint64_t{blob.width} * blob.point_step;
-  if (blob.row_step < row_bytes || std::uint64_t{blob.row_step} * blob.height > blob.data.size ()) {
+  const std::uint64_t row_step = rows ? blob.row_step : row_bytes;
+  if (row_step < row_bytes || row_step * blob.height > blob.data.size ()) {
     problem = "it holds " + std::to_string (blob.data.size ()) + " bytes of points, less than the " +
               std::to_string (row_bytes * blob.height) + " its header announces";
     return false;
@@ -407,6 +411,8 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
+  if (!hasConsistentLayout (header, false, problem))
+    return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
   constexpr int kBinaryCompressed = 2; // PCL's data_type for DATA binary_compressed
   const std::uint64_t expected_size =
       std::uint64_t{header.width} * header.height * header.point_step;
@@ -421,7 +427,7 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   if (status < 0)
     return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);
-  if (!hasConsistentLayout (blob, problem))
+  if (!hasConsistentLayout (blob, true, problem))
     return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
   status = readQuietly ([&] {
     pcl::fromPCLPointCloud2 (blob, cloud);

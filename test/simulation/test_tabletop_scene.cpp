@@ -136,8 +136,11 @@ TEST (SimulationTabletop, EveryInstanceIsVisibleAndRenderingIsFast)
   const RenderedFrame frame = renderTabletop (scene, 1, seconds);
   RecordProperty ("render_ms", static_cast<int> (1000.0 * seconds));
   std::cout << "tabletop render: " << 1000.0 * seconds << " ms" << std::endl;
-  // Well under a second on one core in a Release build; loose here for debug/sanitizer builds.
-  EXPECT_LT (seconds, 10.0);
+  // About 25 ms on one core in an optimized build: a generous bound there (the machine may
+  // be busy); debug and sanitizer builds are far slower and are not timed.
+#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
+  EXPECT_LT (seconds, 2.0);
+#endif
   for (std::size_t i = 0; i < scene.getObjects().size(); ++i) {
     EXPECT_GT (frame.instance_stats[i].visible_pixels, 1500) << "object " << i;
     EXPECT_TRUE (
