@@ -1,7 +1,7 @@
 #pragma once
 
 // What the command-line apps share: reading the scene from the command line, printing a
-// result, and writing the result JSON and model files all-or-nothing.
+// result, and writing the result JSON, model files and pictures all-or-nothing.
 
 #include <mid/discovery/discovery_result.h>
 #include <mid/io/camera_intrinsics.h>
@@ -52,6 +52,14 @@ public:
   /** \brief Stage the outputs; false after a one-line error if a folder is unusable. */
   bool
   stage (const std::string& json_path, const std::string& model_prefix);
+
+  /** \brief Stage one more output that the app writes itself (an image), committed with the
+    * others.
+    * \return the temporary path to write it to; empty after a one-line error if its folder is
+    * missing or not writable
+    */
+  std::string
+  stageFile (const std::string& path) { return files_.stage (path); }
 
   /** \brief Write and commit everything; false after a one-line error. */
   bool

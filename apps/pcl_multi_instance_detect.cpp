@@ -2,6 +2,7 @@
 // RGB-D frame, also when only one instance is present. Same result format as discovery.
 
 #include "app_support.h"
+#include "visual_outputs.h"
 
 #include <mid/features/sift_keypoint_extractor.h>
 #include <mid/registration/model_instance_detector.h>
@@ -27,6 +28,7 @@ struct Options
   std::string model_path;
   mid::apps::SceneInput scene;
   std::string json_path;
+  mid::apps::VisualOutputs pictures;
   float max_descriptor_distance = 200.0f;
   float inlier_threshold = 0.005f;
   int min_inliers = 5;
@@ -46,6 +48,7 @@ printHelp (const char* program)
   print_info ("  MODEL.json          a model written by pcl_multi_instance_discovery -models\n");
   mid::apps::printSceneInputHelp ();
   print_info ("Output:\n  -json FILE          write the result as JSON (same format as discovery)\n");
+  mid::apps::VisualOutputs::printHelp ();
   print_info ("Parameters:\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
     print_info ("  %-19s %s (default ", option, meaning);
@@ -75,7 +78,8 @@ parseOptions (int argc, char** argv, Options& options)
     print_error ("Give the model file MODEL.json first.\n");
     return false;
   }
-  if (!mid::apps::parseSceneInput (argc, argv, options.scene))
+  if (!mid::apps::parseSceneInput (argc, argv, options.scene) ||
+      !options.pictures.parse (argc, argv))
     return false;
   parse_argument (argc, argv, "-json", options.json_path);
   parse_argument (argc, argv, "-max_desc_dist", options.max_descriptor_distance);
@@ -114,7 +118,7 @@ main (int argc, char** argv)
     return 1;
   const double load_ms = watch.getTime ();
   mid::apps::ResultFiles outputs;
-  if (!outputs.stage (options.json_path, ""))
+  if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs))
     return 1;
 
   pcl::StopWatch total;
@@ -148,5 +152,7 @@ main (int argc, char** argv)
     result.models.push_back (*model);
 
   mid::apps::printResult (*cloud, result, load_ms);
-  return outputs.write (result, options.scene.name ()) ? 0 : 1;
+  if (!options.pictures.write (cloud, result) || !outputs.write (result, options.scene.name ()))
+    return 1;
+  return options.pictures.show (cloud, result) ? 0 : 1;
 }

@@ -1,8 +1,10 @@
 // pcl_multi_instance_discovery: discover the objects that appear several times in ONE RGB-D
 // frame, model them, and localize every instance (Abbeloos et al., 3DV 2017). Prints counts,
-// objects and the time of each stage; -json writes the result (doc/result_format.md).
+// objects and the time of each stage; -json writes the result (doc/result_format.md); -overlay,
+// -screenshot and -view show it (doc/visualization.md).
 
 #include "app_support.h"
+#include "visual_outputs.h"
 
 #include <mid/discovery/multi_instance_discovery.h>
 
@@ -28,6 +30,7 @@ struct Options
   mid::apps::SceneInput scene;
   std::string json_path;
   std::string model_prefix;
+  mid::apps::VisualOutputs pictures;
   mid::DiscoveryParameters parameters;
 };
 
@@ -43,6 +46,7 @@ printHelp (const char* program)
   print_info ("Output:\n");
   print_info ("  -json FILE          write the result as JSON (no window, no display needed)\n");
   print_info ("  -models PREFIX      write each object's model as PREFIX<id>.json + PREFIX<id>.pcd\n");
+  mid::apps::VisualOutputs::printHelp ();
   print_info ("Parameters (defaults: Abbeloos et al. 3DV 2017 where the paper gives a value):\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
     print_info ("  %-19s %s (default ", option, meaning);
@@ -82,7 +86,8 @@ bool
 parseOptions (int argc, char** argv, Options& options)
 {
   using pcl::console::parse_argument;
-  if (!mid::apps::parseSceneInput (argc, argv, options.scene))
+  if (!mid::apps::parseSceneInput (argc, argv, options.scene) ||
+      !options.pictures.parse (argc, argv))
     return false;
   mid::DiscoveryParameters& p = options.parameters;
   parse_argument (argc, argv, "-json", options.json_path);
@@ -143,7 +148,8 @@ main (int argc, char** argv)
     return 1;
   const double load_ms = watch.getTime ();
   mid::apps::ResultFiles outputs;
-  if (!outputs.stage (options.json_path, options.model_prefix))
+  if (!outputs.stage (options.json_path, options.model_prefix) ||
+      !options.pictures.stage (outputs))
     return 1;
 
   mid::MultiInstanceDiscovery<PointT> discovery;
@@ -153,7 +159,7 @@ main (int argc, char** argv)
   if (!discovery.discover (result))
     return 1;
   mid::apps::printResult (*cloud, result, load_ms);
-  if (!outputs.write (result, options.scene.name ()))
+  if (!options.pictures.write (cloud, result) || !outputs.write (result, options.scene.name ()))
     return 1;
-  return 0;
+  return options.pictures.show (cloud, result) ? 0 : 1;
 }

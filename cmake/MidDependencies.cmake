@@ -1,6 +1,6 @@
 # Every dependency comes from Debian 12's packages (see run.sh). The list of
 # components here is repeated in cmake/midConfig.cmake.in for downstream projects.
-set(MID_PCL_COMPONENTS common io features search kdtree registration recognition)
+set(MID_PCL_COMPONENTS common io features search kdtree registration recognition visualization)
 set(MID_OPENCV_COMPONENTS core imgproc imgcodecs features2d)
 
 find_package(PCL 1.12 REQUIRED COMPONENTS ${MID_PCL_COMPONENTS})

@@ -154,27 +154,44 @@ startsWithKeyword (const std::string& token, const char* keyword)
   return token.compare (0, std::char_traits<char>::length (keyword), keyword) == 0;
 }
 
+std::uint64_t
+saturatingProduct (std::uint64_t a, std::uint64_t b)
+{
+  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max () / a)
+    return std::numeric_limits<std::uint64_t>::max ();
+  return a * b;
+}
+
+/** A header number as PCL's stream extraction could see it, at most 2^32 (PCL keeps 32 bits). */
+std::uint64_t
+headerNumber (const std::string& token)
+{
+  return std::min<std::uint64_t> (std::strtoull (token.c_str (), nullptr, 10),
+                                  std::uint64_t{1} << 32U);
+}
+
 /** PCL's PCDReader::readHeader allocates the point data (points x point step bytes) as soon as
   * it reads the POINTS line, before it compares anything with the file size: a 160-byte header
-  * made it allocate and zero 4 GiB. This scan reads the header the way PCL does (a line counts
-  * while it starts with a header keyword, also after DATA) and refuses a header that announces
-  * more point data than even a compressed body of this file could hold. The point step is
-  * bounded from above by 8 bytes per value.
+  * made it allocate and zero 4 GiB, and a SIZE value too large for an int gave it a point step
+  * of 4 GiB (both found while fuzzing). This scan reads the header lines the way PCL does (a line
+  * counts while it starts with a header keyword, also after DATA), bounds the point step from
+  * above by every way PCL computes it (sum of SIZE values; sizes times counts), and refuses a
+  * header that announces more point data than even a compressed body of this file could hold.
   */
 bool
 announcesPlausibleSize (const std::string& path, std::uint64_t file_size, std::string& problem)
 {
-  static const char* const kKeywords[] = {"VERSION", "SIZE",      "TYPE",   "WIDTH", "HEIGHT",
-                                          "VIEWPOINT", "DATA"};
+  static const char* const kOtherKeywords[] = {"VERSION", "TYPE", "WIDTH", "HEIGHT", "VIEWPOINT",
+                                               "DATA"};
   std::ifstream file (path, std::ios::binary);
   std::string line;
-  std::uint64_t values = 0, points = 0;
+  std::uint64_t values = 0, largest_size = 8, point_step = 0, points = 0;
   while (std::getline (file, line)) {
     if (line.empty ())
       continue;
     std::istringstream tokens (line);
     tokens.imbue (std::locale::classic ());
-    std::string keyword;
+    std::string keyword, token;
     if (!(tokens >> keyword))
       break;
     if (keyword[0] == '#')
@@ -183,32 +200,32 @@ announcesPlausibleSize (const std::string& path, std::uint64_t file_size, std::s
         startsWithKeyword (keyword, "COUNT")) {
       const bool counts = startsWithKeyword (keyword, "COUNT");
       std::uint64_t sum = 0;
-      std::string token;
-      while (tokens >> token) {
-        // A count PCL cannot read as a number makes it throw; bound it by its digits.
-        const auto count = std::strtoull (token.c_str (), nullptr, 10);
-        sum += counts ? std::min<std::uint64_t> (count, std::uint64_t{1} << 32U) : 1;
-      }
+      while (tokens >> token)
+        sum += counts ? headerNumber (token) : 1;
       values = std::max (values, sum);
-      continue;
     }
-    if (startsWithKeyword (keyword, "POINTS")) {
-      std::string token;
+    else if (startsWithKeyword (keyword, "SIZE")) {
+      std::uint64_t sum = 0;
+      while (tokens >> token) {
+        sum += headerNumber (token);
+        largest_size = std::max (largest_size, headerNumber (token));
+      }
+      point_step = std::max (point_step, sum);
+    }
+    else if (startsWithKeyword (keyword, "POINTS")) {
       if (tokens >> token)
-        points = std::max<std::uint64_t> (
-            points, std::min<std::uint64_t> (std::strtoull (token.c_str (), nullptr, 10),
-                                             std::numeric_limits<std::uint32_t>::max ()));
-      continue;
+        points = std::max (points, headerNumber (token));
     }
-    if (std::none_of (std::begin (kKeywords), std::end (kKeywords),
-                      [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
+    else if (std::none_of (std::begin (kOtherKeywords), std::end (kOtherKeywords),
+                           [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
       break;
   }
-  const std::uint64_t announced = points * 8 * std::min<std::uint64_t> (values, std::uint64_t{1} << 24U);
-  if (announced > kMaxCompressionRatio * file_size) {
-    problem = "its header announces " + std::to_string (points) + " points of " +
-              std::to_string (values) + " values, far more than " + std::to_string (file_size) +
-              " bytes can hold";
+  point_step = std::max (point_step, saturatingProduct (values, largest_size));
+  const std::uint64_t announced = saturatingProduct (points, point_step);
+  if (announced > saturatingProduct (kMaxCompressionRatio, file_size)) {
+    problem = "its header announces " + std::to_string (points) + " points of up to " +
+              std::to_string (point_step) + " bytes, far more than its " +
+              std::to_string (file_size) + " bytes can hold";
     return false;
   }
   return true;

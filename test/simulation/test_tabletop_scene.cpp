@@ -42,7 +42,7 @@ sampleSurface (const Shape& shape)
       SurfaceHit hit;
       if (shape.intersect (
               origin, direction, std::numeric_limits<double>::infinity(), hit))
-        points.push_back (origin + hit.t * direction);
+        points.emplace_back (origin + hit.t * direction);
     }
   return points;
 }
