@@ -1,4 +1,5 @@
 #include "simulation_test_utils.h"
+#include "temporary_folder.h"
 
 #include <mid/simulation/frame_io.h>
 #include <mid/simulation/ground_truth_json.h>
@@ -10,8 +11,7 @@
 #include <pcl/point_types.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <limits>
 
 using namespace mid::simulation;
 using mid::simulation::test::facingPlanePose;
@@ -42,27 +42,6 @@ renderBox ()
   SceneRenderer renderer;
   EXPECT_TRUE (renderer.render (result.scene, result.frame));
   return result;
-}
-
-/** A fresh, empty folder under the test's working directory. */
-std::filesystem::path
-makeEmptyFolder (const std::string& name)
-{
-  const std::filesystem::path folder = std::filesystem::current_path() / name;
-  std::filesystem::remove_all (folder);
-  std::filesystem::create_directories (folder);
-  return folder;
-}
-
-std::size_t
-countEntries (const std::filesystem::path& folder)
-{
-  std::size_t count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator (folder)) {
-    (void)entry;
-    ++count;
-  }
-  return count;
 }
 
 } // namespace
@@ -124,11 +103,11 @@ TEST (SimulationFrameIO, CloudInMillimetresMatchesTheWrittenPngPair)
   const BoxScene data = renderBox();
   pcl::PointCloud<pcl::PointXYZRGBA> cloud;
   ASSERT_TRUE (frameToCloud (data.frame, MILLIMETRE_DEPTH_SCALE, cloud));
-  const std::filesystem::path folder = makeEmptyFolder ("frame_io_png");
-  const std::string color_path = (folder / "rgb.png").string();
-  const std::string depth_path = (folder / "depth.png").string();
+  const mid::test::TemporaryFolder folder;
+  const std::string color_path = folder.file ("rgb.png");
+  const std::string depth_path = folder.file ("depth.png");
   ASSERT_TRUE (writeFrameImages (data.frame, color_path, depth_path));
-  EXPECT_EQ (countEntries (folder), 2u); // no temporary file left
+  EXPECT_EQ (folder.entries(), 2u); // no temporary file left
   const cv::Mat color = cv::imread (color_path, cv::IMREAD_UNCHANGED);
   const cv::Mat depth = cv::imread (depth_path, cv::IMREAD_UNCHANGED);
   ASSERT_EQ (color.type(), CV_8UC3);
@@ -147,14 +126,14 @@ TEST (SimulationFrameIO, CloudInMillimetresMatchesTheWrittenPngPair)
 TEST (SimulationFrameIO, FailedWriteLeavesNoFile)
 {
   const BoxScene data = renderBox();
-  const std::filesystem::path folder = makeEmptyFolder ("frame_io_failure");
+  const mid::test::TemporaryFolder folder;
   // The depth file must be a PNG: nothing at all is written.
   EXPECT_FALSE (writeFrameImages (
-      data.frame, (folder / "rgb.png").string(), (folder / "depth.jpg").string()));
+      data.frame, folder.file ("rgb.png"), folder.file ("depth.jpg")));
   // An unknown colour extension makes the first write fail.
   EXPECT_FALSE (writeFrameImages (
-      data.frame, (folder / "rgb.unknown").string(), (folder / "depth.png").string()));
-  EXPECT_EQ (countEntries (folder), 0u);
+      data.frame, folder.file ("rgb.unknown"), folder.file ("depth.png")));
+  EXPECT_EQ (folder.entries(), 0u);
 }
 
 TEST (SimulationFrameIO, GroundTruthJsonHoldsCameraPosesAndStatistics)
