@@ -79,6 +79,14 @@ printHelp (const char* program)
   line ("-min_inliers N", "RANSAC minimum inliers", static_cast<double> (d.min_inliers));
   line ("-min_ratio R", "RANSAC minimum inlier ratio", static_cast<double> (d.min_inlier_ratio));
   line ("-seed S", "seed of every random choice", d.seed);
+  print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for comparison):\n");
+  print_info ("  -grouping G         triplets (ours, default), gcg (GeometricConsistencyGrouping) or\n");
+  print_info ("                      hough (Hough3DGrouping with BOARD frames)\n");
+  line ("-gc_size S", "GCG consensus resolution, metres", d.gc_size);
+  line ("-gc_threshold N", "GCG smallest group", d.gc_threshold);
+  line ("-hough_bin B", "Hough bin size, metres", d.hough_bin_size);
+  line ("-hough_threshold T", "Hough vote threshold", d.hough_threshold);
+  line ("-lrf_radius R", "BOARD frame radius, metres", static_cast<double> (d.lrf_radius));
 }
 
 /** Parse the command line; false (after a one-line error) if it is unusable. */
@@ -120,6 +128,22 @@ parseOptions (int argc, char** argv, Options& options)
   unsigned seed = 0;
   if (parse_argument (argc, argv, "-seed", seed) >= 0)
     p.seed = seed;
+  std::string grouping = "triplets";
+  parse_argument (argc, argv, "-grouping", grouping);
+  if (grouping == "gcg")
+    p.grouping = mid::Grouping::geometric_consistency;
+  else if (grouping == "hough")
+    p.grouping = mid::Grouping::hough3d;
+  else if (grouping != "triplets") {
+    print_error ("Invalid parameter: -grouping is '%s', must be triplets, gcg or hough.\n",
+                 grouping.c_str ());
+    return false;
+  }
+  parse_argument (argc, argv, "-gc_size", p.gc_size);
+  parse_argument (argc, argv, "-gc_threshold", p.gc_threshold);
+  parse_argument (argc, argv, "-hough_bin", p.hough_bin_size);
+  parse_argument (argc, argv, "-hough_threshold", p.hough_threshold);
+  parse_argument (argc, argv, "-lrf_radius", p.lrf_radius);
   std::string problem;
   if (!mid::validateDiscoveryParameters (p, problem)) {
     print_error ("Invalid parameter: %s.\n", problem.c_str ());

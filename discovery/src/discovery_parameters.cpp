@@ -58,6 +58,11 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "> 0");
   c.require (p.min_cluster_size >= 1, "min_cluster_size", static_cast<double> (p.min_cluster_size),
              ">= 1");
+  c.require (p.gc_size > 0.0, "gc_size", p.gc_size, "> 0");
+  c.require (p.gc_threshold >= 3, "gc_threshold", p.gc_threshold, ">= 3");
+  c.require (p.hough_bin_size > 0.0, "hough_bin_size", p.hough_bin_size, "> 0");
+  c.require (p.hough_threshold > 0.0, "hough_threshold", p.hough_threshold, "> 0");
+  c.require (p.lrf_radius > 0.0f, "lrf_radius", static_cast<double> (p.lrf_radius), "> 0");
   c.require (p.refinement_iterations >= 0, "refinement_iterations", p.refinement_iterations, ">= 0");
   c.require (p.duplicate_angle >= 0.0f, "duplicate_angle", static_cast<double> (p.duplicate_angle), ">= 0");
   c.require (p.duplicate_distance >= 0.0f, "duplicate_distance",

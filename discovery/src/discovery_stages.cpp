@@ -1,5 +1,7 @@
 #include <mid/discovery/discovery_stages.h>
 
+#include "peer_grouping.h"
+
 #include <mid/features/self_matcher.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/model_instance_detector.h>
@@ -107,33 +109,11 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
   return true;
 }
 
-} // namespace
-
+/** Ours: the PPF triplet rejector, then DBSCAN in transformation space. */
 bool
-discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result)
+groupWithTriplets (const DiscoveryParameters& p, DiscoveryResult& result, TripletClusters& clusters)
 {
-  if (!result.keypoints || !result.descriptors) {
-    PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
-    return false;
-  }
-  std::string problem;
-  if (!validateDiscoveryParameters (p, problem)) {
-    PCL_ERROR ("[mid::discoverFromKeypoints] Invalid parameter: %s.\n", problem.c_str ());
-    return false;
-  }
   pcl::StopWatch watch;
-  SelfMatcher matcher;
-  matcher.setInputKeypoints (result.keypoints);
-  matcher.setInputDescriptors (result.descriptors);
-  matcher.setMaxDescriptorDistance (p.max_descriptor_distance);
-  matcher.setMinKeypointDistance (p.min_keypoint_distance);
-  matcher.setMaxDistanceRatio (p.max_distance_ratio);
-  matcher.setMutualCheck (p.mutual_check);
-  if (!matcher.match (result.matches))
-    return false;
-  result.timing_ms.emplace_back ("matching", watch.getTime ());
-
-  watch.reset ();
   CorrespondenceRejectorPPFTriplet rejector;
   rejector.setInputSource (result.keypoints);
   rejector.setMaxDistanceDifference (p.ppf_distance);
@@ -161,15 +141,58 @@ discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result)
   std::vector<pcl::Correspondences> groups;
   if (!triplets->empty ())
     clustering.cluster (groups);
-  auto clusters = std::make_shared<const TripletClusters> (clustering.getClusters ());
-  result.clusters = clusters->size ();
+  clusters = clustering.getClusters ();
+  result.clusters = clusters.size ();
   result.timing_ms.emplace_back ("clustering", watch.getTime ());
+  return true;
+}
+
+} // namespace
+
+bool
+discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result,
+                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface)
+{
+  if (!result.keypoints || !result.descriptors) {
+    PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
+    return false;
+  }
+  std::string problem;
+  if (!validateDiscoveryParameters (p, problem)) {
+    PCL_ERROR ("[mid::discoverFromKeypoints] Invalid parameter: %s.\n", problem.c_str ());
+    return false;
+  }
+  pcl::StopWatch watch;
+  SelfMatcher matcher;
+  matcher.setInputKeypoints (result.keypoints);
+  matcher.setInputDescriptors (result.descriptors);
+  matcher.setMaxDescriptorDistance (p.max_descriptor_distance);
+  matcher.setMinKeypointDistance (p.min_keypoint_distance);
+  matcher.setMaxDistanceRatio (p.max_distance_ratio);
+  matcher.setMutualCheck (p.mutual_check);
+  if (!matcher.match (result.matches))
+    return false;
+  result.timing_ms.emplace_back ("matching", watch.getTime ());
+
+  auto clusters = std::make_shared<TripletClusters> ();
+  if (p.grouping == Grouping::triplets) {
+    if (!groupWithTriplets (p, result, *clusters))
+      return false;
+  }
+  else {
+    result.timing_ms.emplace_back ("triplets", 0.0);
+    watch.reset ();
+    if (!detail::groupWithPeer (p, result.keypoints, surface, result.matches, *clusters))
+      return false;
+    result.clusters = clusters->size ();
+    result.timing_ms.emplace_back ("clustering", watch.getTime ());
+  }
 
   watch.reset ();
   MultiInstanceModelBuilder builder;
   builder.setInputCloud (result.keypoints);
   builder.setInputDescriptors (result.descriptors);
-  builder.setClusters (clusters);
+  builder.setClusters (std::const_pointer_cast<const TripletClusters> (clusters));
   builder.setRefinementIterations (p.refinement_iterations);
   builder.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
   if (!builder.compute (result.models))

@@ -7,6 +7,17 @@
 
 namespace mid {
 
+/** \brief Which method groups the self-matches into pairs of instances. */
+enum class Grouping
+{
+  /** \brief Ours: PPF triplet rejector + transformation-space DBSCAN (the paper). */
+  triplets,
+  /** \brief PCL's GeometricConsistencyGrouping on the same self-matches (a peer). */
+  geometric_consistency,
+  /** \brief PCL's Hough3DGrouping with BOARD reference frames (a peer). */
+  hough3d
+};
+
 /** \brief Every parameter of the discovery pipeline, with the values of Abbeloos et al.
   * (3DV 2017, Sec. 4) as defaults where the paper gives one. Lengths in metres, angles in
   * radians.
@@ -51,6 +62,20 @@ struct DiscoveryParameters
   float cluster_distance = 0.035f;
   /** \brief DBSCAN min samples, the smallest cluster: 14. */
   std::size_t min_cluster_size = 14;
+
+  // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
+  /** \brief The grouping method. */
+  Grouping grouping = Grouping::triplets;
+  /** \brief GeometricConsistencyGrouping: consensus set resolution (metres) and smallest group.
+    */
+  double gc_size = 0.01;
+  int gc_threshold = 8;
+  /** \brief Hough3DGrouping: bin size (metres) and vote threshold; BOARD frames of this radius
+    * (metres) on the surface around each keypoint.
+    */
+  double hough_bin_size = 0.04;
+  double hough_threshold = 3.0;
+  float lrf_radius = 0.03f;
 
   // --- Models (MultiInstanceModelBuilder) ---
   /** \brief Alternations of the joint landmark / pose refinement. */

@@ -4,7 +4,9 @@
 #include <mid/discovery/multi_instance_discovery.h>
 #include <mid/features/sift_keypoint_extractor.h>
 
+#include <pcl/common/point_tests.h>
 #include <pcl/common/time.h>
+#include <pcl/features/integral_image_normal.h>
 
 namespace mid {
 
@@ -30,7 +32,30 @@ MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
   }
   result.image_keypoints = extractor.getImageKeypoints ();
   result.timing_ms.emplace_back ("features", watch.getTime ());
-  if (!discoverFromKeypoints (parameters_, result)) {
+
+  // Only PCL's Hough3D peer needs the surface with normals (for its BOARD reference frames).
+  pcl::PointCloud<pcl::PointNormal>::Ptr surface;
+  if (parameters_.grouping == Grouping::hough3d) {
+    watch.reset ();
+    pcl::PointCloud<pcl::Normal> normals;
+    pcl::IntegralImageNormalEstimation<PointT, pcl::Normal> estimation;
+    estimation.setNormalEstimationMethod (estimation.AVERAGE_3D_GRADIENT);
+    estimation.setMaxDepthChangeFactor (0.02f);
+    estimation.setNormalSmoothingSize (10.0f);
+    estimation.setInputCloud (input_);
+    estimation.compute (normals);
+    surface = pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> ();
+    for (std::size_t i = 0; i < input_->size (); ++i)
+      if (pcl::isXYZFinite ((*input_)[i]) && pcl::isNormalFinite (normals[i])) {
+        pcl::PointNormal point;
+        point.getVector3fMap () = (*input_)[i].getVector3fMap ();
+        point.getNormalVector3fMap () = normals[i].getNormalVector3fMap ();
+        point.curvature = normals[i].curvature;
+        surface->push_back (point);
+      }
+    result.timing_ms.emplace_back ("surface_normals", watch.getTime ());
+  }
+  if (!discoverFromKeypoints (parameters_, result, surface)) {
     result = DiscoveryResult ();
     return false;
   }
