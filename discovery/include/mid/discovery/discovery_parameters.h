@@ -20,86 +20,116 @@ enum class Grouping
 
 /** \brief Every parameter of the discovery pipeline, with the values of Abbeloos et al.
   * (3DV 2017, Sec. 4) as defaults where the paper gives one. Lengths in metres, angles in
-  * radians.
+  * radians. The range each value must lie in is given in brackets; validateDiscoveryParameters()
+  * checks them, and MultiInstanceDiscovery::discover() and discoverFromKeypoints() refuse (with
+  * a PCL_ERROR) parameters that fail it.
   */
 struct DiscoveryParameters
 {
   // --- Keypoints (SIFTKeypointExtractor) ---
-  /** \brief Keep at most this many keypoints, strongest first; 0 keeps all. */
+  /** \brief Keep at most this many keypoints, strongest first; 0 keeps all (>= 0). */
   int max_keypoints = 0;
-  /** \brief SIFT contrast threshold (OpenCV's default). */
+  /** \brief SIFT contrast threshold (OpenCV's default; > 0). */
   double contrast_threshold = 0.04;
-  /** \brief Radius of the neighbourhood a keypoint normal is fitted to. */
+  /** \brief Radius of the neighbourhood a keypoint normal is fitted to (> 0). */
   float normal_radius = 0.015f;
 
   // --- Self-matching (SelfMatcher) ---
-  /** \brief Largest SIFT descriptor distance of a match (the paper thresholds it, no value). */
+  /** \brief Largest SIFT descriptor distance of a match (the paper thresholds it, no value;
+    * > 0).
+    */
   float max_descriptor_distance = 200.0f;
-  /** \brief A keypoint cannot match another closer than this in 3D. */
+  /** \brief A keypoint cannot match another closer than this in 3D (>= 0). */
   float min_keypoint_distance = 0.01f;
-  /** \brief Lowe's ratio test, 1 = off (it would drop matches when 3+ instances exist). */
+  /** \brief Lowe's ratio test, 1 = off (it would drop matches when 3+ instances exist; in
+    * (0, 1]).
+    */
   float max_distance_ratio = 1.0f;
   /** \brief Keep only mutual best matches. */
   bool mutual_check = false;
 
   // --- Triplets (CorrespondenceRejectorPPFTriplet) ---
-  /** \brief Point pair feature thresholds: 5 mm and 35 degrees. */
+  /** \brief Point pair feature thresholds: distance difference 5 mm (>= 0) and angle difference
+    * 35 degrees (in [0, pi]).
+    */
+  ///@{
   float ppf_distance = 0.005f;
   float ppf_angle = static_cast<float> (35.0 * M_PI / 180.0);
-  /** \brief Triangle edges between 10 mm and 125 mm, every angle above 10 degrees. */
+  ///@}
+  /** \brief Triangle edges between 10 mm (> 0) and 125 mm (>= min_edge_length), every angle
+    * above 10 degrees (min_triangle_angle in [0, pi/3)).
+    */
+  ///@{
   float min_edge_length = 0.010f;
   float max_edge_length = 0.125f;
   float min_triangle_angle = static_cast<float> (10.0 * M_PI / 180.0);
-  /** \brief Triangles closer than this overlap (one instance); negative disables the test. */
+  ///@}
+  /** \brief Triangles closer than this overlap (one instance); negative disables the test (not
+    * NaN).
+    */
   float overlap_distance = 0.005f;
-  /** \brief L: accepted triplets per keypoint (the paper's L, no value given). */
+  /** \brief L: accepted triplets per keypoint (the paper's L, no value given; >= 1). */
   int triplets_per_keypoint = 10;
-  /** \brief Hard cap on accepted triplets (memory bound). */
+  /** \brief Hard cap on accepted triplets (memory bound; >= 1). */
   std::size_t max_triplets = 200000;
 
   // --- Clustering (TransformationSpaceClustering) ---
-  /** \brief DBSCAN eps: 35 mm. */
+  /** \brief DBSCAN eps: 35 mm (> 0). */
   float cluster_distance = 0.035f;
-  /** \brief DBSCAN min samples, the smallest cluster: 14. */
+  /** \brief DBSCAN min samples, the smallest cluster: 14 (>= 1). */
   std::size_t min_cluster_size = 14;
 
   // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
   /** \brief The grouping method. */
   Grouping grouping = Grouping::triplets;
-  /** \brief GeometricConsistencyGrouping: consensus set resolution (metres) and smallest group.
+  /** \brief GeometricConsistencyGrouping: consensus set resolution (metres, > 0) and smallest
+    * group (>= 3).
     */
+  ///@{
   double gc_size = 0.01;
   int gc_threshold = 8;
-  /** \brief Hough3DGrouping: bin size (metres) and vote threshold; BOARD frames of this radius
-    * (metres) on the surface around each keypoint.
+  ///@}
+  /** \brief Hough3DGrouping: bin size (metres, > 0) and vote threshold (> 0); BOARD frames of
+    * radius lrf_radius (metres, > 0) on the surface around each keypoint.
     */
+  ///@{
   double hough_bin_size = 0.04;
   double hough_threshold = 3.0;
   float lrf_radius = 0.03f;
+  ///@}
 
   // --- Models (MultiInstanceModelBuilder) ---
-  /** \brief Alternations of the joint landmark / pose refinement. */
+  /** \brief Alternations of the joint landmark / pose refinement (>= 0; 0 skips it). */
   int refinement_iterations = 20;
-  /** \brief Instances whose poses differ by less than this are one instance. */
+  /** \brief Instances whose poses differ by less than this rotation (radians, >= 0) and this
+    * distance at the model centre (metres, >= 0) are one instance.
+    */
+  ///@{
   float duplicate_angle = static_cast<float> (10.0 * M_PI / 180.0);
   float duplicate_distance = 0.01f;
+  ///@}
 
   // --- Additional instances (ModelInstanceDetector) ---
   /** \brief Compare the models with each other and merge those that are one object. */
   bool merge_models = true;
   /** \brief Look for more instances among the keypoints no model uses. */
   bool detect_additional_instances = true;
-  /** \brief RANSAC inlier threshold 5 mm, at least 5 inliers, inlier ratio above 12.5 %. */
+  /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
+    * 12.5 % (min_inlier_ratio in [0, 1)).
+    */
+  ///@{
   float inlier_threshold = 0.005f;
   std::size_t min_inliers = 5;
   float min_inlier_ratio = 0.125f;
-  /** \brief RANSAC hypotheses per detection. */
+  ///@}
+  /** \brief RANSAC hypotheses per detection (>= 1). */
   int ransac_iterations = 1000;
   /** \brief Seed of every random choice. */
   std::uint32_t seed = 0;
 };
 
-/** \brief Check every parameter's range.
+/** \brief Check every parameter's range (the ranges are given with DiscoveryParameters'
+  * fields).
   * \param[in] parameters the parameters
   * \param[out] problem which parameter is wrong and what it must be; empty if all are valid
   * \return true if all are valid

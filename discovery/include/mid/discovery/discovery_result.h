@@ -14,14 +14,22 @@ namespace mid {
 /** \brief Everything one run of MultiInstanceDiscovery found in a frame. */
 struct DiscoveryResult
 {
-  /** \brief The frame's keypoints (xyz + normal), descriptors and image positions. */
+  /** \brief The frame's keypoints (xyz in metres + normal), descriptors and image positions, in
+    * one order.
+    */
+  ///@{
   KeypointCloud::Ptr keypoints;
   SIFTDescriptorCloud::Ptr descriptors;
   ImageKeypoints image_keypoints;
-  /** \brief The self-matches, and how many triplets and clusters they gave. */
+  ///@}
+  /** \brief The self-matches (indices into keypoints), and how many triplets and clusters they
+    * gave.
+    */
+  ///@{
   pcl::Correspondences matches;
   std::size_t triplets = 0;
   std::size_t clusters = 0;
+  ///@}
   /** \brief The discovered objects, each with its instances (poses, keypoints). */
   ObjectModels models;
   /** \brief Milliseconds per stage, in pipeline order: features, matching, triplets,

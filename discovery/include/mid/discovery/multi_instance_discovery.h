@@ -23,16 +23,27 @@ namespace mid {
   * if (discovery.discover (result))
   *   for (const auto& model : result.models) ...   // model.instances[i].pose
   * \endcode
+  *
+  * Please cite: W. Abbeloos, E. Ataer-Cansizoglu, S. Caccamo, Y. Taguchi, Y. Domae, "3D Object
+  * Discovery and Modeling Using Single RGB-D Images Containing Multiple Object Instances",
+  * 3DV 2017.
+  *
+  * \tparam PointT point type with x, y, z (metres) and r, g, b; pcl::PointXYZRGB and
+  * pcl::PointXYZRGBA are precompiled, others need MID_NO_PRECOMPILE (doc/building.md)
   */
 template <typename PointT>
 class MultiInstanceDiscovery : public pcl::PCLBase<PointT>
 {
 public:
-  /** \brief All parameters (defaults: the paper's). */
+  /** \brief All parameters (defaults: the paper's); discover() fails on one out of its range
+    * (see validateDiscoveryParameters()).
+    */
+  ///@{
   void
   setParameters (const DiscoveryParameters& parameters) { parameters_ = parameters; }
   const DiscoveryParameters&
   getParameters () const { return parameters_; }
+  ///@}
 
   /** \brief Run the pipeline on the input cloud.
     * \param[out] result keypoints, matches, counts, models with instances, timings; reset first

@@ -12,37 +12,68 @@ namespace evaluation {
 /** \brief Scores summed over frames (one scenario, or all). */
 struct ScoreSummary
 {
+  /** \brief Frames added. */
   int frames = 0;
   int pair_frames = 0; ///< frames counted for the pair scores (FrameScore::pairs_only)
+  /** \brief Instances: true positives, false positives, false negatives, over all frames. */
+  ///@{
   int instance_tp = 0, instance_fp = 0, instance_fn = 0;
+  ///@}
+  /** \brief Pairs: true positives, false positives, false negatives, over the pair frames. */
+  ///@{
   int pair_tp = 0, pair_fp = 0, pair_fn = 0;
+  ///@}
+  /** \brief Every relative pose error of the frames (FrameScore): rotation in degrees,
+    * translation in millimetres.
+    */
+  ///@{
   std::vector<double> rotation_errors_deg, translation_errors_mm;
+  ///@}
+  /** \brief Time per frame, and of SIFT extraction alone (milliseconds), of the frames whose
+    * result gives them (DetectionResult::total_ms, DetectionResult::features_ms).
+    */
+  ///@{
   std::vector<double> times_ms, feature_times_ms;
+  ///@}
 
-  /** \brief Add one frame; its pair counts only if it holds only pairs. */
+  /** \brief Add one frame; its pair counts only if it holds only pairs.
+    * \param[in] score the frame's score (scoreFrame())
+    * \param[in] result the frame's result, for its times (negative ones are left out)
+    */
   void
   add (const FrameScore& score, const DetectionResult& result);
 
-  /** \brief Add another summary. */
+  /** \brief Add another summary.
+    * \param[in] other the summary whose counts and values are added to this one
+    */
   void
   add (const ScoreSummary& other);
 
-  /** \brief Precision, recall and F1 (0 where undefined). */
+  /** \brief Precision tp / (tp + fp), recall tp / (tp + fn) and F1 = 2 p r / (p + r) of the
+    * counts (or of precision p and recall r), in [0, 1]; 0 where undefined (zero denominator).
+    */
+  ///@{
   static double
   precision (int tp, int fp) { return tp + fp > 0 ? static_cast<double> (tp) / (tp + fp) : 0.0; }
   static double
   recall (int tp, int fn) { return tp + fn > 0 ? static_cast<double> (tp) / (tp + fn) : 0.0; }
   static double
   f1 (double p, double r) { return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0; }
+  ///@}
 };
 
-/** \brief Median of values, NaN if empty. */
+/** \brief Median of values, NaN if empty.
+  * \param[in] values the values (taken by copy, as they are partly sorted)
+  * \return the middle value, or the mean of the two middle values for an even count
+  */
 double
 median (std::vector<double> values);
 
 /** \brief A Table-2-style report: per scenario and in total, precision and recall on instances
   * and on pairs (pair-only frames), F1, median relative pose error, and median time per frame
   * next to the time of SIFT extraction alone.
+  * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
+  * \return a Markdown table, one line per scenario and one for the total
   */
 std::string
 formatReport (const std::map<std::string, ScoreSummary>& scenarios);

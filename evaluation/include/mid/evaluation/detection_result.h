@@ -14,7 +14,7 @@ struct DetectedInstance
 {
   /** \brief Model -> camera pose, metres. */
   Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
-  /** \brief Pixel positions of its keypoints. */
+  /** \brief Pixel positions (u column, v row) of its keypoints. */
   std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>> keypoints;
 
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
@@ -23,12 +23,14 @@ struct DetectedInstance
 /** \brief One discovered object: its instances. */
 struct DetectedObject
 {
+  /** \brief Its instances, in the order of the JSON. */
   std::vector<DetectedInstance, Eigen::aligned_allocator<DetectedInstance>> instances;
 };
 
 /** \brief What a result JSON (doc/result_format.md) says about one frame. */
 struct DetectionResult
 {
+  /** \brief The discovered objects, in the order of the JSON. */
   std::vector<DetectedObject> objects;
   /** \brief timing_ms.total, or -1 if absent. */
   double total_ms = -1.0;

@@ -13,14 +13,20 @@ namespace evaluation {
   */
 struct FrameScore
 {
-  /** \brief Counted on instances. */
+  /** \brief Counted on instances: true positives, false positives, false negatives. */
+  ///@{
   int instance_tp = 0;
   int instance_fp = 0;
   int instance_fn = 0;
-  /** \brief Counted on pairs (one per repeated object type). */
+  ///@}
+  /** \brief Counted on pairs (one per repeated object type): true positives, false positives,
+    * false negatives.
+    */
+  ///@{
   int pair_tp = 0;
   int pair_fp = 0;
   int pair_fn = 0;
+  ///@}
   /** \brief True if every repeated object type has exactly two instances (the paper's subset
     * for pair scores).
     */
@@ -28,8 +34,10 @@ struct FrameScore
   /** \brief Relative pose errors between correctly detected instances of one object: rotation
     * (degrees) and translation (millimetres, at the first instance's object origin).
     */
+  ///@{
   std::vector<double> rotation_errors_deg;
   std::vector<double> translation_errors_mm;
+  ///@}
 };
 
 /** \brief Score one frame.
@@ -45,6 +53,11 @@ struct FrameScore
   * expected to be found. On pairs: a valid object with two or more true positives is a true
   * positive pair, any other object a false positive, and a repeated type without one a false
   * negative.
+  * \param[in] truth the frame's annotations (loadBopScene())
+  * \param[in] result the frame's result (readDetectionResult())
+  * \param[in] min_inside fraction of an instance's keypoints that must lie on one annotated
+  * instance for it to be correct, in [0, 1]; default 0.9 (the paper)
+  * \return the counts and the relative pose errors
   */
 FrameScore
 scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double min_inside = 0.9);

@@ -21,8 +21,10 @@ struct GroundTruthInstance
   /** \brief Visible part: bounding box (x, y, width, height) and, when available, the mask
     * (CV_8UC1, non-zero = visible); the mask decides when present, the box otherwise.
     */
+  ///@{
   cv::Rect bbox_visible;
   cv::Mat mask_visible;
+  ///@}
   /** \brief Visible pixels. */
   int visible_pixels = 0;
 
@@ -32,10 +34,17 @@ struct GroundTruthInstance
 /** \brief The annotations of one frame. */
 struct GroundTruthFrame
 {
+  /** \brief The frame's BOP image id. */
   int image_id = 0;
+  /** \brief Its annotated instances, in the order of scene_gt.json. */
   std::vector<GroundTruthInstance, Eigen::aligned_allocator<GroundTruthInstance>> instances;
 
-  /** \brief True if pixel (u, v) lies on the visible part of instance k. */
+  /** \brief True if pixel (u, v) lies on the visible part of instance k.
+    * \param[in] k the instance, < instances.size () (not checked)
+    * \param[in] u, v column and row, in pixels (rounded to the nearest pixel)
+    * \return whether the mask, or without a mask the box, holds the pixel; false outside the
+    * image
+    */
   bool
   contains (std::size_t k, float u, float v) const;
 };
@@ -45,7 +54,7 @@ using GroundTruthScene = std::map<int, GroundTruthFrame>;
 
 /** \brief Read a BOP scene folder: scene_gt.json (poses; cam_t_m2c in millimetres), and, when
   * present, scene_gt_info.json (visible boxes and pixel counts) and mask_visib/ (visible masks,
-  * <image>_<instance>.png).
+  * `<image>_<instance>.png`).
   * \param[in] folder the scene folder (e.g. .../test/000001)
   * \param[out] scene the frames; cleared on failure
   * \return false (with a PCL_ERROR naming the file and the problem) if scene_gt.json is missing

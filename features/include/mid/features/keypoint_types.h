@@ -10,6 +10,7 @@ namespace mid {
 
 /** \brief A 128-D SIFT descriptor (OpenCV's layout: L2 norm about 512, values 0..255). */
 using SIFTDescriptor = pcl::Histogram<128>;
+/** \brief One SIFTDescriptor per keypoint, in the order of the KeypointCloud it belongs to. */
 using SIFTDescriptorCloud = pcl::PointCloud<SIFTDescriptor>;
 
 /** \brief Keypoints in 3D: position (metres, camera frame), unit surface normal oriented towards
@@ -20,9 +21,13 @@ using KeypointCloud = pcl::PointCloud<pcl::PointNormal>;
 /** \brief Where a keypoint was found in the image (OpenCV's cv::KeyPoint, without OpenCV). */
 struct ImageKeypoint
 {
-  /** \brief Sub-pixel position (column, row). */
+  /** \brief Sub-pixel position: column u and row v, in pixels (0 is the first pixel's
+    * centre).
+    */
+  ///@{
   float u = 0.0f;
   float v = 0.0f;
+  ///@}
   /** \brief Diameter of the meaningful neighbourhood, in pixels. */
   float size = 0.0f;
   /** \brief Orientation in degrees [0, 360). */
@@ -35,6 +40,7 @@ struct ImageKeypoint
   pcl::index_t pixel_index = 0;
 };
 
+/** \brief Image positions of keypoints, in the order of their KeypointCloud. */
 using ImageKeypoints = std::vector<ImageKeypoint>;
 
 } // namespace mid

@@ -28,51 +28,69 @@ namespace mid {
 class SelfMatcher
 {
 public:
+  /** \brief Shared pointer to a matcher. */
   using Ptr = std::shared_ptr<SelfMatcher>;
+  /** \brief Shared pointer to a const matcher. */
   using ConstPtr = std::shared_ptr<const SelfMatcher>;
 
-  /** \brief The keypoints (their positions are used for the minimum 3D distance). */
+  /** \brief The keypoints (their positions are used for the minimum 3D distance); match()
+    * fails while they are not set.
+    */
+  ///@{
   void
   setInputKeypoints (const KeypointCloud::ConstPtr& keypoints) { keypoints_ = keypoints; }
   const KeypointCloud::ConstPtr&
   getInputKeypoints () const { return keypoints_; }
+  ///@}
 
-  /** \brief One descriptor per keypoint, in the keypoints' order. */
+  /** \brief One descriptor per keypoint, in the keypoints' order (match() fails if the counts
+    * differ).
+    */
+  ///@{
   void
   setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
   const SIFTDescriptorCloud::ConstPtr&
   getInputDescriptors () const { return descriptors_; }
+  ///@}
 
   /** \brief Largest L2 descriptor distance of a kept match (the paper's threshold that turns N
     * keypoints into M <= N matches). OpenCV's SIFT descriptors have an L2 norm of about 512.
-    * Default 200.
+    * Default 200; must be > 0 (match() fails otherwise).
     */
+  ///@{
   void
   setMaxDescriptorDistance (float distance) { max_descriptor_distance_ = distance; }
   float
   getMaxDescriptorDistance () const { return max_descriptor_distance_; }
+  ///@}
 
   /** \brief Candidates closer than this to the query keypoint in 3D are skipped (metres).
-    * Default 0.01, the paper's minimum triangle edge.
+    * Default 0.01, the paper's minimum triangle edge; must be >= 0 (match() fails otherwise).
     */
+  ///@{
   void
   setMinKeypointDistance (float distance) { min_keypoint_distance_ = distance; }
   float
   getMinKeypointDistance () const { return min_keypoint_distance_; }
+  ///@}
 
   /** \brief Lowe's ratio test: keep a match only if best < ratio * second best. A ratio of 1
-    * disables the test. Default 1.
+    * disables the test. Default 1; must be in (0, 1] (match() fails otherwise).
     */
+  ///@{
   void
   setMaxDistanceRatio (float ratio) { max_distance_ratio_ = ratio; }
   float
   getMaxDistanceRatio () const { return max_distance_ratio_; }
+  ///@}
 
   /** \brief Keep i->j only if j's best match is i. Default false. */
+  ///@{
   void
   setMutualCheck (bool mutual_check) { mutual_check_ = mutual_check; }
   bool
   getMutualCheck () const { return mutual_check_; }
+  ///@}
 
   /** \brief Match every keypoint to its most similar other keypoint.
     * \param[out] matches the kept matches (see the class description)

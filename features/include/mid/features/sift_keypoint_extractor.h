@@ -29,62 +29,92 @@ namespace mid {
   * "3D Object Discovery and Modeling Using Single RGB-D Images Containing Multiple Object
   * Instances", 3DV 2017; and D. Lowe, "Distinctive Image Features from Scale-Invariant
   * Keypoints", IJCV 2004.
+  *
+  * \tparam PointT point type with x, y, z (metres) and r, g, b; pcl::PointXYZRGB and
+  * pcl::PointXYZRGBA are precompiled, others need MID_NO_PRECOMPILE (doc/building.md)
   */
 template <typename PointT>
 class SIFTKeypointExtractor : public pcl::PCLBase<PointT>
 {
 public:
+  /** \brief Shared pointer to an extractor. */
   using Ptr = std::shared_ptr<SIFTKeypointExtractor<PointT>>;
+  /** \brief Shared pointer to a const extractor. */
   using ConstPtr = std::shared_ptr<const SIFTKeypointExtractor<PointT>>;
+  /** \brief The input: an organized cloud with x, y, z (metres) and r, g, b. */
   using PointCloud = pcl::PointCloud<PointT>;
 
   SIFTKeypointExtractor () = default;
 
-  /** \brief Keep at most this many keypoints (the strongest); 0 keeps all. Default 0. */
+  /** \brief Keep at most this many keypoints (the strongest); 0 keeps all. Default 0; must be
+    * >= 0 (compute() fails otherwise).
+    */
+  ///@{
   void
   setMaxKeypoints (int max_keypoints) { max_keypoints_ = max_keypoints; }
   int
   getMaxKeypoints () const { return max_keypoints_; }
+  ///@}
 
-  /** \brief SIFT layers per octave (OpenCV nOctaveLayers). Default 3. */
+  /** \brief SIFT layers per octave (OpenCV nOctaveLayers). Default 3; must be >= 1 (compute()
+    * fails otherwise).
+    */
+  ///@{
   void
   setOctaveLayers (int octave_layers) { octave_layers_ = octave_layers; }
   int
   getOctaveLayers () const { return octave_layers_; }
+  ///@}
 
-  /** \brief SIFT contrast threshold: larger gives fewer keypoints in flat regions. Default 0.04.
+  /** \brief SIFT contrast threshold: larger gives fewer keypoints in flat regions. Default 0.04;
+    * must be > 0 (compute() fails otherwise).
     */
+  ///@{
   void
   setContrastThreshold (double contrast_threshold) { contrast_threshold_ = contrast_threshold; }
   double
   getContrastThreshold () const { return contrast_threshold_; }
+  ///@}
 
-  /** \brief SIFT edge threshold: larger keeps more edge-like keypoints. Default 10. */
+  /** \brief SIFT edge threshold: larger keeps more edge-like keypoints. Default 10; must be > 0
+    * (compute() fails otherwise).
+    */
+  ///@{
   void
   setEdgeThreshold (double edge_threshold) { edge_threshold_ = edge_threshold; }
   double
   getEdgeThreshold () const { return edge_threshold_; }
+  ///@}
 
-  /** \brief Sigma of the Gaussian at octave 0, in pixels. Default 1.6. */
+  /** \brief Sigma of the Gaussian at octave 0, in pixels. Default 1.6; must be > 0 (compute()
+    * fails otherwise).
+    */
+  ///@{
   void
   setSigma (double sigma) { sigma_ = sigma; }
   double
   getSigma () const { return sigma_; }
+  ///@}
 
-  /** \brief Radius (metres) of the neighbourhood a keypoint's normal is fitted to. Default 0.015.
+  /** \brief Radius (metres) of the neighbourhood a keypoint's normal is fitted to. Default 0.015;
+    * must be > 0 (compute() fails otherwise).
     */
+  ///@{
   void
   setNormalRadius (float normal_radius) { normal_radius_ = normal_radius; }
   float
   getNormalRadius () const { return normal_radius_; }
+  ///@}
 
   /** \brief Fewest neighbours (keypoint included) a normal is fitted to; keypoints with fewer are
-    * dropped. Default 8.
+    * dropped. Default 8; must be >= 3 (compute() fails otherwise).
     */
+  ///@{
   void
   setMinNormalNeighbors (int min_normal_neighbors) { min_normal_neighbors_ = min_normal_neighbors; }
   int
   getMinNormalNeighbors () const { return min_normal_neighbors_; }
+  ///@}
 
   /** \brief Detect, describe and lift the keypoints of the input cloud's image.
     * \param[out] keypoints 3D keypoints with normals (unorganized, one per kept keypoint)

@@ -11,13 +11,19 @@ namespace io {
   */
 struct CameraIntrinsics
 {
-  /** \brief Focal lengths in pixels. */
+  /** \brief Focal lengths in pixels (fx along columns, fy along rows); validateIntrinsics()
+    * requires them > 0.
+    */
+  ///@{
   double fx = 0.0;
   double fy = 0.0;
-  /** \brief Principal point in pixels. */
+  ///@}
+  /** \brief Principal point in pixels (cx column, cy row). */
+  ///@{
   double cx = 0.0;
   double cy = 0.0;
-  /** \brief Metres per depth unit: 0.001 for millimetre PNGs (BOP, TUM uses 1/5000). */
+  ///@}
+  /** \brief Metres per depth unit: 0.001 for millimetre PNGs (BOP, TUM uses 1/5000); > 0. */
   double depth_scale = 0.001;
 };
 

@@ -52,7 +52,9 @@ namespace mid {
 class CorrespondenceRejectorPPFTriplet : public pcl::registration::CorrespondenceRejector
 {
 public:
+  /** \brief Shared pointer to a rejector. */
   using Ptr = std::shared_ptr<CorrespondenceRejectorPPFTriplet>;
+  /** \brief Shared pointer to a const rejector. */
   using ConstPtr = std::shared_ptr<const CorrespondenceRejectorPPFTriplet>;
 
   CorrespondenceRejectorPPFTriplet () { rejection_name_ = "CorrespondenceRejectorPPFTriplet"; }
@@ -61,7 +63,7 @@ public:
     * \param[in] original_correspondences the matches (index_query into the source keypoints,
     * index_match into the target keypoints, distance = descriptor distance)
     * \param[out] remaining_correspondences the matches used by an accepted triplet; empty (with
-    * a PCL_ERROR) if the input is unusable
+    * a PCL_ERROR) if the input is unusable or a parameter is out of its range
     */
   void
   getRemainingCorrespondences (const pcl::Correspondences& original_correspondences,
@@ -71,96 +73,149 @@ public:
   const TripletMatches&
   getTripletMatches () const { return triplets_; }
 
-  /** \brief Source keypoints: positions (metres) and unit normals. */
+  /** \brief Source keypoints: positions (metres) and unit normals. Required: without them, or
+    * with a keypoint that a match uses lacking a finite position and unit normal,
+    * getRemainingCorrespondences() gives no matches.
+    */
+  ///@{
   void
   setInputSource (const KeypointCloud::ConstPtr& source) { source_ = source; }
   const KeypointCloud::ConstPtr&
   getInputSource () const { return source_; }
+  ///@}
 
   /** \brief Target keypoints; leave unset (or set the same cloud) for matches inside one frame,
     * which also enables match reversal and the overlap test.
     */
+  ///@{
   void
   setInputTarget (const KeypointCloud::ConstPtr& target) { target_ = target; }
   const KeypointCloud::ConstPtr&
   getInputTarget () const { return target_; }
+  ///@}
 
-  /** \brief PCL registration hooks: points and normals arrive as PCLPointCloud2 (fields x, y, z,
-    * normal_x, normal_y, normal_z), e.g. from pcl::IterativeClosestPoint.
+  /** \brief PCL registration hook: true, the source positions are needed. Through the hooks,
+    * points and normals arrive as PCLPointCloud2 (fields x, y, z, normal_x, normal_y,
+    * normal_z), e.g. from pcl::IterativeClosestPoint.
     */
   bool
   requiresSourcePoints () const override { return true; }
+  /** \brief PCL registration hook: set the source keypoints from a PCLPointCloud2.
+    * \param[in] cloud2 fields x, y, z (metres), and the normals if it has them; without them,
+    * the normals of the previous source are kept if it has the same size
+    */
   void
   setSourcePoints (pcl::PCLPointCloud2::ConstPtr cloud2) override;
+  /** \brief PCL registration hook: true, the source normals are needed. */
   bool
   requiresSourceNormals () const override { return true; }
+  /** \brief PCL registration hook: set the normals of the source keypoints already given.
+    * \param[in] cloud2 fields normal_x, normal_y, normal_z (unit length); ignored if it has no
+    * normals or its size differs from the source's
+    */
   void
   setSourceNormals (pcl::PCLPointCloud2::ConstPtr cloud2) override;
+  /** \brief PCL registration hook: true, the target positions are needed. */
   bool
   requiresTargetPoints () const override { return true; }
+  /** \brief PCL registration hook: set the target keypoints from a PCLPointCloud2.
+    * \param[in] cloud2 fields x, y, z (metres), and the normals if it has them; without them,
+    * the normals of the previous target are kept if it has the same size
+    */
   void
   setTargetPoints (pcl::PCLPointCloud2::ConstPtr cloud2) override;
+  /** \brief PCL registration hook: true, the target normals are needed. */
   bool
   requiresTargetNormals () const override { return true; }
+  /** \brief PCL registration hook: set the normals of the target keypoints already given.
+    * \param[in] cloud2 fields normal_x, normal_y, normal_z (unit length); ignored if it has no
+    * normals or its size differs from the target's
+    */
   void
   setTargetNormals (pcl::PCLPointCloud2::ConstPtr cloud2) override;
 
   /** \brief Largest | |p_a - p_b| - |q_a - q_b| | of two compatible matches (metres). Default
-    * 0.005.
+    * 0.005; must be >= 0.
     */
+  ///@{
   void
   setMaxDistanceDifference (float value) { max_distance_difference_ = value; }
   float
   getMaxDistanceDifference () const { return max_distance_difference_; }
+  ///@}
 
-  /** \brief Largest difference of each point pair feature angle (radians). Default 35 deg. */
+  /** \brief Largest difference of each point pair feature angle (radians). Default 35 deg; must
+    * be in [0, pi].
+    */
+  ///@{
   void
   setMaxAngleDifference (float value) { max_angle_difference_ = value; }
   float
   getMaxAngleDifference () const { return max_angle_difference_; }
+  ///@}
 
-  /** \brief Shortest triangle edge (metres). Default 0.010. */
+  /** \brief Shortest triangle edge (metres). Default 0.010; must be > 0. */
+  ///@{
   void
   setMinEdgeLength (float value) { min_edge_length_ = value; }
   float
   getMinEdgeLength () const { return min_edge_length_; }
+  ///@}
 
-  /** \brief Longest triangle edge (metres). Default 0.125. */
+  /** \brief Longest triangle edge (metres). Default 0.125; must be >= the shortest. */
+  ///@{
   void
   setMaxEdgeLength (float value) { max_edge_length_ = value; }
   float
   getMaxEdgeLength () const { return max_edge_length_; }
+  ///@}
 
-  /** \brief Every triangle angle must exceed this (radians). Default 10 deg. */
+  /** \brief Every triangle angle must exceed this (radians). Default 10 deg; must be in
+    * [0, pi/3).
+    */
+  ///@{
   void
   setMinTriangleAngle (float value) { min_triangle_angle_ = value; }
   float
   getMinTriangleAngle () const { return min_triangle_angle_; }
+  ///@}
 
   /** \brief Triangles closer than this (metres) overlap; 0 rejects only touching or
     * intersecting ones. Negative disables the test (e.g. for organized rows of objects).
-    * Default 0.005.
+    * Default 0.005; must not be NaN.
     */
+  ///@{
   void
   setOverlapDistance (float value) { overlap_distance_ = value; }
   float
   getOverlapDistance () const { return overlap_distance_; }
+  ///@}
 
-  /** \brief L: the most accepted triplets one keypoint may take part in. Default 10. */
+  /** \brief L: the most accepted triplets one keypoint may take part in. Default 10; must be
+    * >= 1.
+    */
+  ///@{
   void
   setMaxTripletsPerKeypoint (int value) { max_triplets_per_keypoint_ = value; }
   int
   getMaxTripletsPerKeypoint () const { return max_triplets_per_keypoint_; }
+  ///@}
 
   /** \brief Hard cap on accepted triplets, which bounds memory; reaching it prints a warning.
-    * Default 200000.
+    * Default 200000; must be >= 1.
     */
+  ///@{
   void
   setMaxTriplets (std::size_t value) { max_triplets_ = value; }
   std::size_t
   getMaxTriplets () const { return max_triplets_; }
+  ///@}
 
 protected:
+  /** \brief PCL's hook behind CorrespondenceRejector::getCorrespondences(): runs
+    * getRemainingCorrespondences() on the input correspondences.
+    * \param[out] correspondences the matches used by an accepted triplet
+    */
   void
   applyRejection (pcl::Correspondences& correspondences) override
   {

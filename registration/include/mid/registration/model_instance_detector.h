@@ -27,83 +27,119 @@ namespace mid {
   *
   * Random draws come from std::mt19937 seeded with the seed parameter: the same input and seed
   * give the same instances.
+  *
+  * Please cite: W. Abbeloos, E. Ataer-Cansizoglu, S. Caccamo, Y. Taguchi, Y. Domae, "3D Object
+  * Discovery and Modeling Using Single RGB-D Images Containing Multiple Object Instances",
+  * 3DV 2017.
   */
 class ModelInstanceDetector
 {
 public:
+  /** \brief Shared pointer to a detector. */
   using Ptr = std::shared_ptr<ModelInstanceDetector>;
+  /** \brief Shared pointer to a const detector. */
   using ConstPtr = std::shared_ptr<const ModelInstanceDetector>;
 
-  /** \brief The model to find (landmarks, descriptors, diameter). */
+  /** \brief The model to find (landmarks, descriptors, diameter). Required; detect() fails if
+    * a descriptor refers to a landmark the model does not have.
+    */
+  ///@{
   void
   setModel (const std::shared_ptr<const ObjectModel>& model) { model_ = model; }
   const std::shared_ptr<const ObjectModel>&
   getModel () const { return model_; }
+  ///@}
 
-  /** \brief The frame's keypoints and their descriptors (same order). */
+  /** \brief The frame's keypoints (positions in metres, camera frame). Required. */
+  ///@{
   void
   setInputKeypoints (const KeypointCloud::ConstPtr& keypoints) { keypoints_ = keypoints; }
   const KeypointCloud::ConstPtr&
   getInputKeypoints () const { return keypoints_; }
+  ///@}
+  /** \brief One descriptor per keypoint, in the keypoints' order. Required; detect() fails if
+    * the counts differ.
+    */
+  ///@{
   void
   setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
   const SIFTDescriptorCloud::ConstPtr&
   getInputDescriptors () const { return descriptors_; }
+  ///@}
 
   /** \brief Only these keypoints may form instances (e.g. those no model uses yet); unset means
-    * all.
+    * all. detect() fails if an index lies outside the keypoints.
     */
+  ///@{
   void
   setCandidates (const pcl::IndicesConstPtr& candidates) { candidates_ = candidates; }
   const pcl::IndicesConstPtr&
   getCandidates () const { return candidates_; }
+  ///@}
 
-  /** \brief Largest L2 descriptor distance of a landmark -> keypoint match. Default 200. */
+  /** \brief Largest L2 descriptor distance of a landmark -> keypoint match. Default 200; must be
+    * > 0.
+    */
+  ///@{
   void
   setMaxDescriptorDistance (float distance) { max_descriptor_distance_ = distance; }
   float
   getMaxDescriptorDistance () const { return max_descriptor_distance_; }
+  ///@}
 
-  /** \brief RANSAC inlier threshold (metres). Default 0.005 (the paper). */
+  /** \brief RANSAC inlier threshold (metres). Default 0.005 (the paper); must be > 0. */
+  ///@{
   void
   setInlierThreshold (float threshold) { inlier_threshold_ = threshold; }
   float
   getInlierThreshold () const { return inlier_threshold_; }
+  ///@}
 
-  /** \brief Fewest inliers of a detection. Default 5 (the paper). */
+  /** \brief Fewest inliers of a detection. Default 5 (the paper); must be >= 3. */
+  ///@{
   void
   setMinInliers (std::size_t count) { min_inliers_ = count; }
   std::size_t
   getMinInliers () const { return min_inliers_; }
+  ///@}
 
-  /** \brief The inlier ratio must exceed this. Default 0.125 (the paper). */
+  /** \brief The inlier ratio must exceed this. Default 0.125 (the paper); must be in [0, 1). */
+  ///@{
   void
   setMinInlierRatio (float ratio) { min_inlier_ratio_ = ratio; }
   float
   getMinInlierRatio () const { return min_inlier_ratio_; }
+  ///@}
 
-  /** \brief RANSAC hypotheses per detection. Default 1000. */
+  /** \brief RANSAC hypotheses per detection. Default 1000; must be >= 1. */
+  ///@{
   void
   setMaxIterations (int iterations) { max_iterations_ = iterations; }
   int
   getMaxIterations () const { return max_iterations_; }
+  ///@}
 
   /** \brief Seed of the random draws. Default 0. */
+  ///@{
   void
   setSeed (std::uint32_t seed) { seed_ = seed; }
   std::uint32_t
   getSeed () const { return seed_; }
+  ///@}
 
   /** \brief Most instances to find (0 = no limit). Default 0. */
+  ///@{
   void
   setMaxInstances (std::size_t count) { max_instances_ = count; }
   std::size_t
   getMaxInstances () const { return max_instances_; }
+  ///@}
 
   /** \brief Find the model's instances.
     * \param[out] instances each with its pose (model -> camera), inlier keypoints and the
     *             landmark each observes, and rms error; in the order found
-    * \return false (instances cleared, PCL_ERROR printed) on missing or inconsistent input
+    * \return false (instances cleared, PCL_ERROR printed) on missing or inconsistent input, or
+    * a parameter out of its range; true otherwise, also when no instance is found
     */
   bool
   detect (ModelInstances& instances) const;

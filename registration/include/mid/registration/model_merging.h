@@ -26,6 +26,12 @@ mergeModel (ObjectModel& into, const ObjectModel& from, const Eigen::Matrix4f& i
 
 /** \brief Add a detected instance to a model and extend the model with its observations'
   * descriptors; an instance whose pose coincides with an existing one is joined to it.
+  * \param[in,out] model the model that gains the instance and the descriptors
+  * \param[in] instance the detected instance (ModelInstanceDetector::detect()); its indices
+  *            must be valid for the model and the frame (not checked)
+  * \param[in] frame_descriptors the descriptors of the frame's keypoints
+  * \param[in] max_angle, max_distance an existing instance whose pose coincides with the new
+  *            one within these (radians, metres) is the same instance
   */
 void
 addInstance (ObjectModel& model, const ModelInstance& instance,

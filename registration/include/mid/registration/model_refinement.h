@@ -16,11 +16,16 @@ namespace mid {
   *
   * \param[in,out] model landmarks and instance poses (observations unchanged)
   * \param[in] keypoints the frame's keypoints the observations index
-  * \param[in] max_iterations most alternations
-  * \param[in] fixed_instance the instance whose pose stays fixed
+  * \param[in] max_iterations most alternations (default 20); it stops earlier once an
+  *            iteration lowers the cost by less than 1e-6 of it; 0 or less only recomputes the
+  *            instances' rms errors
+  * \param[in] fixed_instance the instance whose pose stays fixed (default 0); an index past the
+  *            last instance leaves every pose free
   * \param[out] costs the mean squared residual before the first and after each iteration
   *             (optional)
-  * \return the final root mean square residual over all observations (metres)
+  * \return the final root mean square residual over all observations (metres). The
+  *         observations' indices must be valid for the model and keypoints (not checked); an
+  *         instance with fewer than three distinct landmarks keeps its pose
   */
 float
 refineModel (ObjectModel& model, const KeypointCloud& keypoints, int max_iterations = 20,

@@ -39,36 +39,55 @@ namespace mid {
 class MultiInstanceModelBuilder : public pcl::PCLBase<pcl::PointNormal>
 {
 public:
+  /** \brief Shared pointer to a model builder. */
   using Ptr = std::shared_ptr<MultiInstanceModelBuilder>;
+  /** \brief Shared pointer to a const model builder. */
   using ConstPtr = std::shared_ptr<const MultiInstanceModelBuilder>;
+  /** \brief Shared pointer to the const input clusters. */
   using TripletClustersConstPtr = std::shared_ptr<const TripletClusters>;
 
-  /** \brief One descriptor per keypoint of the input cloud. */
+  /** \brief One descriptor per keypoint of the input cloud (pcl::PCLBase::setInputCloud(), the
+    * frame's keypoints with normals, metres). Required; compute() fails if the counts differ.
+    */
+  ///@{
   void
   setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
   const SIFTDescriptorCloud::ConstPtr&
   getInputDescriptors () const { return descriptors_; }
+  ///@}
 
-  /** \brief The clusters of triplet matches (indices into the input cloud). */
+  /** \brief The clusters of triplet matches (indices into the input cloud). Required; compute()
+    * fails if a cluster has a non-finite pose or an index outside the input cloud.
+    */
+  ///@{
   void
   setClusters (const TripletClustersConstPtr& clusters) { clusters_ = clusters; }
   const TripletClustersConstPtr&
   getClusters () const { return clusters_; }
+  ///@}
 
-  /** \brief The weight delta of an edge between sets that share keypoints. Default 1e-4. */
+  /** \brief The weight delta of an edge between sets that share keypoints (metres, like the rms
+    * weights of the other edges). Default 1e-4; must be >= 0.
+    */
+  ///@{
   void
   setSharedPointWeight (double delta) { shared_point_weight_ = delta; }
   double
   getSharedPointWeight () const { return shared_point_weight_; }
+  ///@}
 
-  /** \brief Most alternations of the joint refinement; 0 skips it. Default 20. */
+  /** \brief Most alternations of the joint refinement; 0 skips it. Default 20; must be >= 0. */
+  ///@{
   void
   setRefinementIterations (int iterations) { refinement_iterations_ = iterations; }
   int
   getRefinementIterations () const { return refinement_iterations_; }
+  ///@}
 
   /** \brief Two instances of one object are the same if their poses differ by less than this
     * rotation (radians) and this distance at the model centre (metres). Defaults 10 deg, 0.01.
+    * \param[in] angle rotation threshold in radians, >= 0
+    * \param[in] distance distance threshold in metres, >= 0
     */
   void
   setDuplicateThresholds (float angle, float distance)
@@ -76,14 +95,17 @@ public:
     duplicate_angle_ = angle;
     duplicate_distance_ = distance;
   }
+  /** \brief Rotation threshold of two duplicate instances (radians). Default 10 deg. */
   float
   getDuplicateAngle () const { return duplicate_angle_; }
+  /** \brief Distance threshold of two duplicate instances (metres). Default 0.01. */
   float
   getDuplicateDistance () const { return duplicate_distance_; }
 
   /** \brief Build the models.
     * \param[out] models one per connected component, largest (most observations) first
-    * \return false (models cleared, PCL_ERROR printed) on missing or inconsistent input
+    * \return false (models cleared, PCL_ERROR printed) on missing or inconsistent input, or a
+    * parameter out of its range; true otherwise, also when no model is found
     */
   bool
   compute (ObjectModels& models);

@@ -16,16 +16,20 @@ struct ModelInstance
   /** \brief Rigid pose mapping model coordinates to camera coordinates (metres). */
   Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
   /** \brief The frame's keypoints observed on this instance (indices into the keypoint cloud),
-    * and for each the model landmark it observes.
+    * and for each the model landmark it observes (index into ObjectModel::landmarks; both
+    * vectors have the same size).
     */
+  ///@{
   pcl::Indices keypoints;
   std::vector<int> landmarks;
+  ///@}
   /** \brief Root mean square of |pose * landmark - keypoint| over the observations (metres). */
   float rms_error = 0.0f;
 
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
+/** \brief Instances of one object (Eigen-aligned, as ModelInstance holds a fixed-size matrix). */
 using ModelInstances = std::vector<ModelInstance, Eigen::aligned_allocator<ModelInstance>>;
 
 /** \brief A sparse 3D model of an object discovered from its repeated instances, and where those
@@ -42,6 +46,9 @@ struct ObjectModel
   KeypointCloud landmarks;
   /** \brief Descriptors of the landmarks' observations. */
   SIFTDescriptorCloud descriptors;
+  /** \brief For each descriptor, the landmark it describes (index into landmarks; same size as
+    * descriptors).
+    */
   std::vector<int> descriptor_landmarks;
   /** \brief Largest distance between two landmarks (metres). */
   float diameter = 0.0f;
@@ -49,21 +56,35 @@ struct ObjectModel
   ModelInstances instances;
 };
 
+/** \brief Every object discovered in a frame. */
 using ObjectModels = std::vector<ObjectModel>;
 
-/** \brief Recompute an instance's rms_error from its observations. */
+/** \brief Recompute an instance's rms_error from its observations (0 when it has none).
+  * \param[in] model the model whose landmarks the instance observes
+  * \param[in] keypoints the frame's keypoints the instance's indices refer to
+  * \param[in,out] instance its pose and observations are read, its rms_error written; its
+  * indices must be valid for model and keypoints (not checked)
+  */
 void
 updateInstanceError (const ObjectModel& model, const KeypointCloud& keypoints,
                      ModelInstance& instance);
 
 /** \brief True if two model -> camera poses place the model within max_angle (radians) and
   * max_distance (metres, measured at the model point `center`) of each other.
+  * \param[in] a first pose, model -> camera
+  * \param[in] b second pose, model -> camera
+  * \param[in] center model point at which the distance is measured (model frame, metres)
+  * \param[in] max_angle the relative rotation must be smaller than this (radians)
+  * \param[in] max_distance the two images of center must be closer than this (metres)
+  * \return true if both bounds hold (false for NaN input)
   */
 bool
 posesCoincide (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector3f& center,
                float max_angle, float max_distance);
 
-/** \brief Recompute a model's diameter from its landmarks. */
+/** \brief Recompute a model's diameter from its landmarks (0 for fewer than two).
+  * \param[in,out] model its landmarks are read, its diameter written
+  */
 void
 updateModelDiameter (ObjectModel& model);
 

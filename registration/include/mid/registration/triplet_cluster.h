@@ -24,17 +24,22 @@ struct TripletCluster
   /** \brief Root mean square residual of the pairs under the transform (metres). */
   float rms_error = 0.0f;
   /** \brief The keypoints of set P and of set Q (sorted, distinct). */
+  ///@{
   pcl::Indices source_indices;
   pcl::Indices target_indices;
+  ///@}
   /** \brief The input triplets in the cluster, and for each whether it was used reversed (Q->P)
     * because it came from the merged inverse cluster.
     */
+  ///@{
   std::vector<std::size_t> triplets;
   std::vector<bool> reversed;
+  ///@}
 
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
+/** \brief Clusters of one frame (Eigen-aligned, as TripletCluster holds a fixed-size matrix). */
 using TripletClusters = std::vector<TripletCluster, Eigen::aligned_allocator<TripletCluster>>;
 
 } // namespace mid

@@ -28,6 +28,7 @@ struct TripletMatch
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
+/** \brief Triplet matches (Eigen-aligned, as TripletMatch holds a fixed-size matrix). */
 using TripletMatches = std::vector<TripletMatch, Eigen::aligned_allocator<TripletMatch>>;
 
 } // namespace mid

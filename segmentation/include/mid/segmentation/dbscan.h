@@ -29,12 +29,15 @@ public:
   using RegionQuery = std::function<void (std::size_t, std::vector<Neighbor>&)>;
 
   /** \brief Items (itself included) within eps that make an item a core item. Default 14
-    * (Abbeloos et al.: a cluster needs 14 triplet matches).
+    * (Abbeloos et al.: a cluster needs 14 triplet matches). 0 gives no clusters at all (see
+    * cluster()).
     */
+  ///@{
   void
   setMinSamples (std::size_t min_samples) { min_samples_ = min_samples; }
   std::size_t
   getMinSamples () const { return min_samples_; }
+  ///@}
 
   /** \brief Cluster n items.
     * \param[in] n number of items
@@ -51,7 +54,14 @@ private:
   std::size_t min_samples_ = 14;
 };
 
-/** \brief A region query that compares an item with all others: for tests and small n. */
+/** \brief A region query that compares an item with all others: for tests and small n.
+  * \param[in] n number of items; the query must only be called with items below n
+  * \param[in] eps the clustering distance: neighbours are the items j != i with
+  *            distance (i, j) <= eps (in the distance's unit)
+  * \param[in] distance the distance between two items (symmetric); a NaN distance never
+  *            makes a neighbour
+  * \return the query, which keeps a copy of distance
+  */
 DBSCAN::RegionQuery
 makeAllPairsRegionQuery (std::size_t n, double eps,
                          std::function<double (std::size_t, std::size_t)> distance);

@@ -50,73 +50,105 @@ class TransformationSpaceClustering
 : public pcl::CorrespondenceGrouping<pcl::PointNormal, pcl::PointNormal>
 {
 public:
+  /** \brief Shared pointer to a clusterer. */
   using Ptr = std::shared_ptr<TransformationSpaceClustering>;
+  /** \brief Shared pointer to a const clusterer. */
   using ConstPtr = std::shared_ptr<const TransformationSpaceClustering>;
+  /** \brief Shared pointer to the const input triplets. */
   using TripletMatchesConstPtr = std::shared_ptr<const TripletMatches>;
+  /** \brief One pose per cluster (4x4, Eigen-aligned), as PCL's recognize() returns them. */
   using Transformations = std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>;
 
   /** \brief Triplet matches to cluster (indices into the model and scene clouds). Also sets
     * the model-scene correspondences to theirs, as PCL's grouping interface requires them.
+    * Clustering fails (no clusters, PCL_ERROR) if a triplet has a non-finite pose or refers to
+    * a keypoint that is missing or not finite.
     */
+  ///@{
   void
   setInputTriplets (const TripletMatchesConstPtr& triplets);
   const TripletMatchesConstPtr&
   getInputTriplets () const { return triplets_; }
+  ///@}
 
-  /** \brief Set keypoint matches; the triplets are then made from them by the rejector. */
+  /** \brief Set keypoint matches; the triplets are then made from them by the rejector (the
+    * triplets given with setInputTriplets() are forgotten).
+    * \param[in] correspondences index_query into the model cloud, index_match into the scene
+    */
   void
   setModelSceneCorrespondences (const pcl::CorrespondencesConstPtr& correspondences) override;
 
-  /** \brief The rejector that turns correspondences into triplets (when no triplets are set). */
+  /** \brief The rejector that turns correspondences into triplets (when no triplets are set);
+    * unset means one with default settings.
+    */
+  ///@{
   void
   setTripletRejector (const CorrespondenceRejectorPPFTriplet::Ptr& rejector) { rejector_ = rejector; }
   const CorrespondenceRejectorPPFTriplet::Ptr&
   getTripletRejector () const { return rejector_; }
+  ///@}
 
   /** \brief DBSCAN's eps: the largest distance D between neighbouring triplet matches (metres).
-    * Default 0.035.
+    * Default 0.035; must be > 0 (no clusters, with a PCL_ERROR, otherwise).
     */
+  ///@{
   void
   setClusterDistance (float eps) { eps_ = eps; }
   float
   getClusterDistance () const { return eps_; }
+  ///@}
 
   /** \brief DBSCAN's min samples (a core triplet has this many within eps, itself included), so
-    * also the smallest cluster. Default 14.
+    * also the smallest cluster. Default 14; must be >= 1 (no clusters, with a PCL_ERROR,
+    * otherwise).
     */
+  ///@{
   void
   setMinClusterSize (std::size_t size) { min_cluster_size_ = size; }
   std::size_t
   getMinClusterSize () const { return min_cluster_size_; }
+  ///@}
 
   /** \brief Merge clusters that are the same pair of instances in opposite directions.
     * Default true.
     */
+  ///@{
   void
   setMergeInverseClusters (bool merge) { merge_inverse_ = merge; }
   bool
   getMergeInverseClusters () const { return merge_inverse_; }
+  ///@}
 
   /** \brief Most neighbour entries (16 bytes each) kept in memory. Within this budget each
     * pair of triplets is compared once; beyond it every region query compares again (same
     * result, about four times the work). Default 8 Mi entries (128 MiB).
     */
+  ///@{
   void
   setMaxStoredNeighbors (std::size_t entries) { max_stored_neighbors_ = entries; }
   std::size_t
   getMaxStoredNeighbors () const { return max_stored_neighbors_; }
+  ///@}
 
   /** \brief Cluster; one group of correspondences per cluster (PCL's grouping interface).
     * Hides pcl::CorrespondenceGrouping::cluster to also clear this class's results first.
+    * \param[out] clustered_corrs each cluster's distinct keypoint pairs; empty (with a
+    * PCL_ERROR) on bad input
     */
   void
   cluster (std::vector<pcl::Correspondences>& clustered_corrs);
 
   /** \brief Cluster and return one pose per cluster (mapping its set P onto its set Q) with the
     * cluster's correspondences. Both outputs are empty (with a PCL_ERROR) on bad input.
+    * \param[out] transformations one pose per cluster, in the order of getClusters()
+    * \param[out] clustered_corrs each cluster's distinct keypoint pairs, in the same order
     */
   void
   recognize (Transformations& transformations, std::vector<pcl::Correspondences>& clustered_corrs);
+  /** \brief Cluster and return one pose per cluster (mapping its set P onto its set Q); empty
+    * (with a PCL_ERROR) on bad input.
+    * \param[out] transformations one pose per cluster, in the order of getClusters()
+    */
   void
   recognize (Transformations& transformations);
 
@@ -131,6 +163,11 @@ public:
   getTriplets () const { return used_triplets_; }
 
 protected:
+  /** \brief PCL's hook behind cluster(): makes the triplets if none are given, checks the
+    * input, runs DBSCAN and merges inverse clusters (see the class description).
+    * \param[out] clustered_corrs each cluster's distinct keypoint pairs; empty (with a
+    * PCL_ERROR) on bad input
+    */
   void
   clusterCorrespondences (std::vector<pcl::Correspondences>& clustered_corrs) override;
 
