@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 
 PACKAGES=(cmake g++ make pkg-config libpcl-dev libopencv-dev libvtk9-dev libeigen3-dev
           libflann-dev libboost-dev libboost-graph-dev libgtest-dev libbenchmark-dev
-          nlohmann-json3-dev
+          nlohmann-json3-dev doxygen
           xvfb xauth clang-14 libclang-rt-14-dev clang-tidy-14 clang-format-14)
 BUILD_DIR=${MID_BUILD_DIR:-build}
 ASAN_BUILD_DIR=${MID_ASAN_BUILD_DIR:-build-asan}
@@ -61,8 +61,12 @@ sanitized_suite() {
 fuzz() {
   cmake -S . -B "$FUZZ_BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
-        -DMID_BUILD_FUZZERS=ON -DMID_WARNINGS_AS_ERRORS=ON -DMID_BUILD_BENCHMARKS=OFF
-  cmake --build "$FUZZ_BUILD_DIR" -j "$JOBS" --target fuzz_pcd fuzz_rgbd
+        -DMID_BUILD_FUZZERS=ON -DMID_WARNINGS_AS_ERRORS=ON -DMID_BUILD_BENCHMARKS=OFF \
+        -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+  cmake --build "$FUZZ_BUILD_DIR" -j "$JOBS" --target fuzz_pcd fuzz_rgbd make_fuzz_corpus
+  # The fuzz programs are only in this build's compile commands, so clang-tidy checks them here.
+  MID_JOBS="$JOBS" scripts/run_clang_tidy.sh "$FUZZ_BUILD_DIR" test/fuzz/fuzz_pcd.cpp \
+    test/fuzz/fuzz_rgbd.cpp test/fuzz/make_fuzz_corpus.cpp
   mkdir -p "$FUZZ_BUILD_DIR/artifacts"
   for target in pcd rgbd; do
     mkdir -p "$FUZZ_BUILD_DIR/corpus/$target"

@@ -40,14 +40,18 @@ printHelp (const char* program)
   const mid::DiscoveryParameters d;
   print_info ("Discover objects that appear several times in one RGB-D frame.\n\n");
   print_info ("Usage: %s SCENE.pcd [options]\n", program);
-  print_info ("   or: %s -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C [options]\n\n",
-              program);
-  mid::apps::printSceneInputHelp ();
+  print_info (
+      "   or: %s -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C [options]\n\n",
+      program);
+  mid::apps::printSceneInputHelp();
   print_info ("Output:\n");
-  print_info ("  -json FILE          write the result as JSON (no window, no display needed)\n");
-  print_info ("  -models PREFIX      write each object's model as PREFIX<id>.json + PREFIX<id>.pcd\n");
-  mid::apps::VisualOutputs::printHelp ();
-  print_info ("Parameters (defaults: Abbeloos et al. 3DV 2017 where the paper gives a value):\n");
+  print_info ("  -json FILE          write the result as JSON (no window, no display "
+              "needed)\n");
+  print_info ("  -models PREFIX      write each object's model as PREFIX<id>.json + "
+              "PREFIX<id>.pcd\n");
+  mid::apps::VisualOutputs::printHelp();
+  print_info ("Parameters (defaults: Abbeloos et al. 3DV 2017 where the paper gives a "
+              "value):\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
     print_info ("  %-19s %s (default ", option, meaning);
     print_value ("%g", value);
@@ -55,38 +59,63 @@ printHelp (const char* program)
   };
   line ("-max_keypoints N", "keep the N strongest keypoints, 0 = all", d.max_keypoints);
   line ("-contrast T", "SIFT contrast threshold", d.contrast_threshold);
-  line ("-normal_radius R", "keypoint normal radius, metres", static_cast<double> (d.normal_radius));
-  line ("-max_desc_dist D", "largest SIFT descriptor distance of a match",
+  line ("-normal_radius R",
+        "keypoint normal radius, metres",
+        static_cast<double> (d.normal_radius));
+  line ("-max_desc_dist D",
+        "largest SIFT descriptor distance of a match",
         static_cast<double> (d.max_descriptor_distance));
-  line ("-min_kp_dist M", "skip match candidates closer than M metres",
+  line ("-min_kp_dist M",
+        "skip match candidates closer than M metres",
         static_cast<double> (d.min_keypoint_distance));
-  line ("-ratio R", "Lowe ratio test, 1 = off", static_cast<double> (d.max_distance_ratio));
+  line ("-ratio R",
+        "Lowe ratio test, 1 = off",
+        static_cast<double> (d.max_distance_ratio));
   print_info ("  -mutual             keep only mutual best matches\n");
-  line ("-ppf_dist D", "point pair feature distance threshold, metres",
+  line ("-ppf_dist D",
+        "point pair feature distance threshold, metres",
         static_cast<double> (d.ppf_distance));
-  line ("-ppf_angle A", "point pair feature angle threshold, degrees",
+  line ("-ppf_angle A",
+        "point pair feature angle threshold, degrees",
         static_cast<double> (d.ppf_angle) * 180.0 / M_PI);
-  line ("-min_edge E", "shortest triangle edge, metres", static_cast<double> (d.min_edge_length));
-  line ("-max_edge E", "longest triangle edge, metres", static_cast<double> (d.max_edge_length));
-  line ("-min_angle A", "smallest triangle angle, degrees",
+  line ("-min_edge E",
+        "shortest triangle edge, metres",
+        static_cast<double> (d.min_edge_length));
+  line ("-max_edge E",
+        "longest triangle edge, metres",
+        static_cast<double> (d.max_edge_length));
+  line ("-min_angle A",
+        "smallest triangle angle, degrees",
         static_cast<double> (d.min_triangle_angle) * 180.0 / M_PI);
-  line ("-overlap D", "triangles closer than D overlap, < 0 = off",
+  line ("-overlap D",
+        "triangles closer than D overlap, < 0 = off",
         static_cast<double> (d.overlap_distance));
-  line ("-triplets_per_kp L", "accepted triplets per keypoint", d.triplets_per_keypoint);
+  line (
+      "-triplets_per_kp L", "accepted triplets per keypoint", d.triplets_per_keypoint);
   line ("-eps E", "DBSCAN distance, metres", static_cast<double> (d.cluster_distance));
-  line ("-min_cluster N", "DBSCAN min samples", static_cast<double> (d.min_cluster_size));
-  line ("-inlier D", "RANSAC inlier threshold, metres", static_cast<double> (d.inlier_threshold));
-  line ("-min_inliers N", "RANSAC minimum inliers", static_cast<double> (d.min_inliers));
-  line ("-min_ratio R", "RANSAC minimum inlier ratio", static_cast<double> (d.min_inlier_ratio));
+  line (
+      "-min_cluster N", "DBSCAN min samples", static_cast<double> (d.min_cluster_size));
+  line ("-inlier D",
+        "RANSAC inlier threshold, metres",
+        static_cast<double> (d.inlier_threshold));
+  line (
+      "-min_inliers N", "RANSAC minimum inliers", static_cast<double> (d.min_inliers));
+  line ("-min_ratio R",
+        "RANSAC minimum inlier ratio",
+        static_cast<double> (d.min_inlier_ratio));
   line ("-seed S", "seed of every random choice", d.seed);
-  print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for comparison):\n");
-  print_info ("  -grouping G         triplets (ours, default), gcg (GeometricConsistencyGrouping) or\n");
+  print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
+              "comparison):\n");
+  print_info ("  -grouping G         triplets (ours, default), gcg "
+              "(GeometricConsistencyGrouping) or\n");
   print_info ("                      hough (Hough3DGrouping with BOARD frames)\n");
   line ("-gc_size S", "GCG consensus resolution, metres", d.gc_size);
   line ("-gc_threshold N", "GCG smallest group", d.gc_threshold);
   line ("-hough_bin B", "Hough bin size, metres", d.hough_bin_size);
   line ("-hough_threshold T", "Hough vote threshold", d.hough_threshold);
-  line ("-lrf_radius R", "BOARD frame radius, metres", static_cast<double> (d.lrf_radius));
+  line ("-lrf_radius R",
+        "BOARD frame radius, metres",
+        static_cast<double> (d.lrf_radius));
 }
 
 /** Parse the command line; false (after a one-line error) if it is unusable. */
@@ -135,8 +164,9 @@ parseOptions (int argc, char** argv, Options& options)
   else if (grouping == "hough")
     p.grouping = mid::Grouping::hough3d;
   else if (grouping != "triplets") {
-    print_error ("Invalid parameter: -grouping is '%s', must be triplets, gcg or hough.\n",
-                 grouping.c_str ());
+    print_error (
+        "Invalid parameter: -grouping is '%s', must be triplets, gcg or hough.\n",
+        grouping.c_str());
     return false;
   }
   parse_argument (argc, argv, "-gc_size", p.gc_size);
@@ -146,7 +176,7 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-lrf_radius", p.lrf_radius);
   std::string problem;
   if (!mid::validateDiscoveryParameters (p, problem)) {
-    print_error ("Invalid parameter: %s.\n", problem.c_str ());
+    print_error ("Invalid parameter: %s.\n", problem.c_str());
     return false;
   }
   return true;
@@ -167,10 +197,10 @@ main (int argc, char** argv)
     return 1;
 
   pcl::StopWatch watch;
-  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>>();
   if (!mid::apps::loadScene (options.scene, *cloud))
     return 1;
-  const double load_ms = watch.getTime ();
+  const double load_ms = watch.getTime();
   mid::apps::ResultFiles outputs;
   if (!outputs.stage (options.json_path, options.model_prefix) ||
       !options.pictures.stage (outputs))
@@ -183,7 +213,8 @@ main (int argc, char** argv)
   if (!discovery.discover (result))
     return 1;
   mid::apps::printResult (*cloud, result, load_ms);
-  if (!options.pictures.write (cloud, result) || !outputs.write (result, options.scene.name ()))
+  if (!options.pictures.write (cloud, result) ||
+      !outputs.write (result, options.scene.name()))
     return 1;
   return options.pictures.show (cloud, result) ? 0 : 1;
 }

@@ -24,13 +24,17 @@ using pcl::console::print_info;
   * after a one-line error.
   */
 int
-parseNumbers (int argc, char** argv, const char* option, std::size_t count, std::vector<double>& values)
+parseNumbers (int argc,
+              char** argv,
+              const char* option,
+              std::size_t count,
+              std::vector<double>& values)
 {
   const int index = pcl::console::find_argument (argc, argv, option);
   if (index < 0)
     return 0;
-  values.clear ();
-  for (int i = index + 1; i < argc && values.size () < count; ++i) {
+  values.clear();
+  for (int i = index + 1; i < argc && values.size() < count; ++i) {
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod (argv[i], &end);
@@ -38,7 +42,7 @@ parseNumbers (int argc, char** argv, const char* option, std::size_t count, std:
       break;
     values.push_back (value);
   }
-  if (values.size () != count) {
+  if (values.size() != count) {
     print_error ("%s needs %zu numbers.\n", option, count);
     return -1;
   }
@@ -48,25 +52,33 @@ parseNumbers (int argc, char** argv, const char* option, std::size_t count, std:
 bool
 endsWithPng (const std::string& path)
 {
-  return path.size () > 4 && path.compare (path.size () - 4, 4, ".png") == 0;
+  return path.size() > 4 && path.compare (path.size() - 4, 4, ".png") == 0;
 }
 
 } // namespace
 
 void
-VisualOutputs::printHelp ()
+VisualOutputs::printHelp()
 {
-  print_info ("Pictures (none by default; without -screenshot and -view no display is needed):\n");
-  print_info ("  -overlay FILE.png   the color image with each instance's keypoints, box and label\n");
+  print_info ("Pictures (none by default; without -screenshot and -view no display is "
+              "needed):\n");
+  print_info ("  -overlay FILE.png   the color image with each instance's keypoints, "
+              "box and label\n");
   print_info ("                      in its object's color\n");
-  print_info ("  -screenshot FILE.png  3D view rendered off-screen: scene, model landmarks at each\n");
-  print_info ("                      instance's pose, 5 cm frames, models on the right (needs an X\n");
-  print_info ("                      display: run under xvfb-run -a on a headless machine)\n");
-  print_info ("  -size W H           screenshot and window size in pixels (default 640 480)\n");
-  print_info ("  -viewpoint X Y Z    look from this point (camera frame, metres) at the instances\n");
+  print_info ("  -screenshot FILE.png  3D view rendered off-screen: scene, model "
+              "landmarks at each\n");
+  print_info ("                      instance's pose, 5 cm frames, models on the right "
+              "(needs an X\n");
+  print_info (
+      "                      display: run under xvfb-run -a on a headless machine)\n");
+  print_info (
+      "  -size W H           screenshot and window size in pixels (default 640 480)\n");
+  print_info ("  -viewpoint X Y Z    look from this point (camera frame, metres) at "
+              "the instances\n");
   print_info ("                      (default: through the RGB-D camera)\n");
   print_info ("  -draw_matches       also draw the self-matches as lines\n");
-  print_info ("  -view               open an interactive 3D window after the work (needs a display)\n");
+  print_info ("  -view               open an interactive 3D window after the work "
+              "(needs a display)\n");
 }
 
 bool
@@ -77,8 +89,8 @@ VisualOutputs::parse (int argc, char** argv)
   view_ = pcl::console::find_switch (argc, argv, "-view");
   draw_matches_ = pcl::console::find_switch (argc, argv, "-draw_matches");
   for (const std::string* path : {&screenshot_path_, &overlay_path_})
-    if (!path->empty () && !endsWithPng (*path)) {
-      print_error ("'%s' must end in .png.\n", path->c_str ());
+    if (!path->empty() && !endsWithPng (*path)) {
+      print_error ("'%s' must end in .png.\n", path->c_str());
       return false;
     }
   std::vector<double> values;
@@ -89,8 +101,10 @@ VisualOutputs::parse (int argc, char** argv)
     constexpr double kSmallest = 16.0, kLargest = 8192.0;
     if (!(values[0] >= kSmallest && values[0] <= kLargest && values[1] >= kSmallest &&
           values[1] <= kLargest)) {
-      print_error ("Invalid parameter: -size %g %g, each must be in [16, 8192] pixels.\n",
-                   values[0], values[1]);
+      print_error (
+          "Invalid parameter: -size %g %g, each must be in [16, 8192] pixels.\n",
+          values[0],
+          values[1]);
       return false;
     }
     width_ = static_cast<int> (values[0]);
@@ -101,10 +115,12 @@ VisualOutputs::parse (int argc, char** argv)
     return false;
   has_viewpoint_ = viewpoint > 0;
   if (has_viewpoint_)
-    viewpoint_ = Eigen::Vector3d (values[0], values[1], values[2]).cast<float> ();
-  if ((!screenshot_path_.empty () || view_) && !visualization::displayAvailable ()) {
-    print_error ("%s needs an X display, and DISPLAY is unset or unreachable (headless: run "
-                 "under xvfb-run -a).\n", view_ ? "-view" : "-screenshot");
+    viewpoint_ = Eigen::Vector3d (values[0], values[1], values[2]).cast<float>();
+  if ((!screenshot_path_.empty() || view_) && !visualization::displayAvailable()) {
+    print_error (
+        "%s needs an X display, and DISPLAY is unset or unreachable (headless: run "
+        "under xvfb-run -a).\n",
+        view_ ? "-view" : "-screenshot");
     return false;
   }
   return true;
@@ -113,20 +129,21 @@ VisualOutputs::parse (int argc, char** argv)
 bool
 VisualOutputs::stage (ResultFiles& files)
 {
-  if (!screenshot_path_.empty () &&
-      (screenshot_temporary_ = files.stageFile (screenshot_path_)).empty ())
+  if (!screenshot_path_.empty() &&
+      (screenshot_temporary_ = files.stageFile (screenshot_path_)).empty())
     return false;
-  return overlay_path_.empty () || !(overlay_temporary_ = files.stageFile (overlay_path_)).empty ();
+  return overlay_path_.empty() ||
+         !(overlay_temporary_ = files.stageFile (overlay_path_)).empty();
 }
 
 bool
 VisualOutputs::write (const pcl::PointCloud<PointT>::ConstPtr& cloud,
                       const DiscoveryResult& result) const
 {
-  if (!overlay_temporary_.empty () &&
+  if (!overlay_temporary_.empty() &&
       !visualization::saveOverlay (overlay_temporary_, *cloud, result))
     return false;
-  if (screenshot_temporary_.empty ())
+  if (screenshot_temporary_.empty())
     return true;
   visualization::DiscoveryViewer<PointT> viewer;
   viewer.setInputCloud (cloud);

@@ -37,13 +37,15 @@ public:
     * false after a one-line error.
     */
   bool
-  write (const pcl::PointCloud<PointT>::ConstPtr& cloud, const DiscoveryResult& result) const;
+  write (const pcl::PointCloud<PointT>::ConstPtr& cloud,
+         const DiscoveryResult& result) const;
 
   /** \brief Open the interactive window if -view was given; returns when it is closed. False
     * after a one-line error.
     */
   bool
-  show (const pcl::PointCloud<PointT>::ConstPtr& cloud, const DiscoveryResult& result) const;
+  show (const pcl::PointCloud<PointT>::ConstPtr& cloud,
+        const DiscoveryResult& result) const;
 
 private:
   std::string screenshot_path_;
@@ -55,7 +57,7 @@ private:
   bool view_ = false;
   bool draw_matches_ = false;
   bool has_viewpoint_ = false;
-  Eigen::Vector3f viewpoint_ = Eigen::Vector3f::Zero ();
+  Eigen::Vector3f viewpoint_ = Eigen::Vector3f::Zero();
 };
 
 } // namespace apps

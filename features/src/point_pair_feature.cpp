@@ -9,7 +9,7 @@ namespace mid {
 float
 angleBetween (const Eigen::Vector3f& a, const Eigen::Vector3f& b)
 {
-  return std::atan2 (a.cross (b).norm (), a.dot (b));
+  return std::atan2 (a.cross (b).norm(), a.dot (b));
 }
 
 bool
@@ -19,11 +19,11 @@ computePointPairFeature (const Eigen::Vector3f& p1,
                          const Eigen::Vector3f& n2,
                          PointPairFeature& feature)
 {
-  if (!p1.allFinite () || !p2.allFinite () || !n1.allFinite () || !n2.allFinite ())
+  if (!p1.allFinite() || !p2.allFinite() || !n1.allFinite() || !n2.allFinite())
     return false;
   const Eigen::Vector3f d = p2 - p1;
-  const float distance = d.norm ();
-  if (distance <= 0.0f || n1.squaredNorm () <= 0.0f || n2.squaredNorm () <= 0.0f)
+  const float distance = d.norm();
+  if (distance <= 0.0f || n1.squaredNorm() <= 0.0f || n2.squaredNorm() <= 0.0f)
     return false;
   feature.distance = distance;
   feature.angle_n1_d = angleBetween (n1, d);
@@ -50,8 +50,9 @@ arePointPairFeaturesSimilar (const PointPairFeature& a,
                              float max_angle_difference)
 {
   const PointPairFeature d = pointPairFeatureDifference (a, b);
-  return d.distance <= max_distance_difference && d.angle_n1_d <= max_angle_difference &&
-         d.angle_n2_d <= max_angle_difference && d.angle_n1_n2 <= max_angle_difference;
+  return d.distance <= max_distance_difference &&
+         d.angle_n1_d <= max_angle_difference && d.angle_n2_d <= max_angle_difference &&
+         d.angle_n1_n2 <= max_angle_difference;
 }
 
 } // namespace mid

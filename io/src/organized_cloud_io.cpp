@@ -35,14 +35,16 @@ constexpr float kMaxPlausibleMedianDepth = 100.0f;
   */
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 25U;
 
-constexpr std::array<std::uint8_t, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr std::array<std::uint8_t, 8> kPngSignature{
+    0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 constexpr std::array<std::uint8_t, 3> kJpegSignature{0xFF, 0xD8, 0xFF};
 
 template <std::size_t N>
 bool
-startsWith (const std::vector<std::uint8_t>& data, const std::array<std::uint8_t, N>& prefix)
+startsWith (const std::vector<std::uint8_t>& data,
+            const std::array<std::uint8_t, N>& prefix)
 {
-  return data.size () >= N && std::equal (prefix.begin (), prefix.end (), data.begin ());
+  return data.size() >= N && std::equal (prefix.begin(), prefix.end(), data.begin());
 }
 
 std::uint32_t
@@ -59,19 +61,22 @@ std::uint64_t
 headerPixels (const std::vector<std::uint8_t>& data)
 {
   if (startsWith (data, kPngSignature))
-    return data.size () < 24 ? 0 : std::uint64_t{bigEndian (data, 16, 4)} * bigEndian (data, 20, 4);
+    return data.size() < 24
+               ? 0
+               : std::uint64_t{bigEndian (data, 16, 4)} * bigEndian (data, 20, 4);
   // JPEG: walk the marker segments up to the first SOFn (C0..CF except C4 DHT, C8, CC DAC).
   std::size_t at = 2;
-  while (at + 4 <= data.size () && data[at] == 0xFF) {
+  while (at + 4 <= data.size() && data[at] == 0xFF) {
     const std::uint8_t marker = data[at + 1];
     if (marker == 0xFF) { // a fill byte
       ++at;
       continue;
     }
-    if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC)
-      return at + 9 > data.size () ? 0
-                                   : std::uint64_t{bigEndian (data, at + 5, 2)} *
-                                         bigEndian (data, at + 7, 2);
+    if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 &&
+        marker != 0xCC)
+      return at + 9 > data.size() ? 0
+                                  : std::uint64_t{bigEndian (data, at + 5, 2)} *
+                                        bigEndian (data, at + 7, 2);
     const bool standalone = marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7);
     at += standalone ? 2 : 2 + bigEndian (data, at + 2, 2);
   }
@@ -90,7 +95,7 @@ decodeImage (const std::vector<std::uint8_t>& data,
              cv::Mat& image,
              std::string& problem)
 {
-  image.release ();
+  image.release();
   const bool png = startsWith (data, kPngSignature);
   if (!png && (is_depth || !startsWith (data, kJpegSignature))) {
     problem = name + (is_depth ? " is not a PNG image (depth must be a 16-bit PNG)"
@@ -104,17 +109,17 @@ decodeImage (const std::vector<std::uint8_t>& data,
     return false;
   }
   try {
-    image = cv::imdecode (data, is_depth ? cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR
-                                         : cv::IMREAD_COLOR);
+    image = cv::imdecode (
+        data, is_depth ? cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR : cv::IMREAD_COLOR);
   }
   catch (const std::exception&) {
-    image.release ();
+    image.release();
   }
-  if (image.empty ()) {
+  if (image.empty()) {
     problem = name + " is not a readable image (corrupt or truncated)";
     return false;
   }
-  if (is_depth && image.type () != CV_16UC1) {
+  if (is_depth && image.type() != CV_16UC1) {
     problem = name + " is not a single-channel 16-bit depth image";
     return false;
   }
@@ -127,22 +132,22 @@ readFile (const std::string& path, std::vector<std::uint8_t>& data)
   std::ifstream file (path, std::ios::binary);
   if (!file)
     return false;
-  data.assign (std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char> ());
-  return !file.bad ();
+  data.assign (std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char>());
+  return !file.bad();
 }
 
 bool
 isReadableFile (const std::string& path)
 {
   std::ifstream file (path, std::ios::binary);
-  return file.good ();
+  return file.good();
 }
 
 bool
 isEmptyFile (const std::string& path)
 {
   std::ifstream file (path, std::ios::binary | std::ios::ate);
-  return file.tellg () <= 0;
+  return file.tellg() <= 0;
 }
 
 /** LZF, the compression of binary_compressed PCD files, turns 3 bytes into at most 264. */
@@ -157,8 +162,8 @@ startsWithKeyword (const std::string& token, const char* keyword)
 std::uint64_t
 saturatingProduct (std::uint64_t a, std::uint64_t b)
 {
-  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max () / a)
-    return std::numeric_limits<std::uint64_t>::max ();
+  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a)
+    return std::numeric_limits<std::uint64_t>::max();
   return a * b;
 }
 
@@ -166,7 +171,7 @@ saturatingProduct (std::uint64_t a, std::uint64_t b)
 std::uint64_t
 headerNumber (const std::string& token)
 {
-  return std::min<std::uint64_t> (std::strtoull (token.c_str (), nullptr, 10),
+  return std::min<std::uint64_t> (std::strtoull (token.c_str(), nullptr, 10),
                                   std::uint64_t{1} << 32U);
 }
 
@@ -179,24 +184,27 @@ headerNumber (const std::string& token)
   * header that announces more point data than even a compressed body of this file could hold.
   */
 bool
-announcesPlausibleSize (const std::string& path, std::uint64_t file_size, std::string& problem)
+announcesPlausibleSize (const std::string& path,
+                        std::uint64_t file_size,
+                        std::string& problem)
 {
-  static const char* const kOtherKeywords[] = {"VERSION", "TYPE", "WIDTH", "HEIGHT", "VIEWPOINT",
-                                               "DATA"};
+  static const char* const kOtherKeywords[] = {
+      "VERSION", "TYPE", "WIDTH", "HEIGHT", "VIEWPOINT", "DATA"};
   std::ifstream file (path, std::ios::binary);
   std::string line;
   std::uint64_t values = 0, largest_size = 8, point_step = 0, points = 0;
   while (std::getline (file, line)) {
-    if (line.empty ())
+    if (line.empty())
       continue;
     std::istringstream tokens (line);
-    tokens.imbue (std::locale::classic ());
+    tokens.imbue (std::locale::classic());
     std::string keyword, token;
     if (!(tokens >> keyword))
       break;
     if (keyword[0] == '#')
       continue;
-    if (startsWithKeyword (keyword, "FIELDS") || startsWithKeyword (keyword, "COLUMNS") ||
+    if (startsWithKeyword (keyword, "FIELDS") ||
+        startsWithKeyword (keyword, "COLUMNS") ||
         startsWithKeyword (keyword, "COUNT")) {
       const bool counts = startsWithKeyword (keyword, "COUNT");
       std::uint64_t sum = 0;
@@ -216,8 +224,10 @@ announcesPlausibleSize (const std::string& path, std::uint64_t file_size, std::s
       if (tokens >> token)
         points = std::max (points, headerNumber (token));
     }
-    else if (std::none_of (std::begin (kOtherKeywords), std::end (kOtherKeywords),
-                           [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
+    else if (std::none_of (
+                 std::begin (kOtherKeywords),
+                 std::end (kOtherKeywords),
+                 [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
       break;
   }
   point_step = std::max (point_step, saturatingProduct (values, largest_size));
@@ -245,8 +255,8 @@ hasPlausibleCompressedBody (const std::string& path,
   std::array<unsigned char, 8> sizes{};
   std::ifstream file (path, std::ios::binary);
   file.seekg (static_cast<std::streamoff> (body_offset));
-  if (body_offset + sizes.size () > file_size ||
-      !file.read (reinterpret_cast<char*> (sizes.data ()), sizes.size ())) {
+  if (body_offset + sizes.size() > file_size ||
+      !file.read (reinterpret_cast<char*> (sizes.data()), sizes.size())) {
     problem = "its compressed body is missing";
     return false;
   }
@@ -255,13 +265,14 @@ hasPlausibleCompressedBody (const std::string& path,
            std::uint64_t{sizes[at + 2]} << 16U | std::uint64_t{sizes[at + 3]} << 24U;
   };
   const std::uint64_t compressed = little_endian (0), uncompressed = little_endian (4);
-  if (body_offset + sizes.size () + compressed > file_size) {
+  if (body_offset + sizes.size() + compressed > file_size) {
     problem = "its compressed body is truncated";
     return false;
   }
   if (uncompressed != expected_size) {
     problem = "its compressed body holds " + std::to_string (uncompressed) +
-              " bytes of points, its header announces " + std::to_string (expected_size);
+              " bytes of points, its header announces " +
+              std::to_string (expected_size);
     return false;
   }
   return true;
@@ -273,11 +284,11 @@ hasPlausibleCompressedBody (const std::string& path,
 class QuietPCLConsole
 {
 public:
-  QuietPCLConsole () : level_ (pcl::console::getVerbosityLevel ())
+  QuietPCLConsole() : level_ (pcl::console::getVerbosityLevel())
   {
     pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
   }
-  ~QuietPCLConsole () { pcl::console::setVerbosityLevel (level_); }
+  ~QuietPCLConsole() { pcl::console::setVerbosityLevel (level_); }
   QuietPCLConsole (const QuietPCLConsole&) = delete;
   QuietPCLConsole&
   operator= (const QuietPCLConsole&) = delete;
@@ -296,7 +307,7 @@ readQuietly (ReadFunction read)
 {
   QuietPCLConsole quiet;
   try {
-    return read ();
+    return read();
   }
   catch (...) {
     return -1;
@@ -324,15 +335,17 @@ hasConsistentLayout (const pcl::PCLPointCloud2& blob, bool rows, std::string& pr
       return false;
     }
   }
-  if (blob.width == 0 || blob.height == 0) { // fromPCLPointCloud2 would take &cloud[0] of nothing
+  if (blob.width == 0 ||
+      blob.height == 0) { // fromPCLPointCloud2 would take &cloud[0] of nothing
     problem = "it holds no points (width " + std::to_string (blob.width) + ", height " +
               std::to_string (blob.height) + ")";
     return false;
   }
   const std::uint64_t row_bytes = std::uint64_t{blob.width} * blob.point_step;
   const std::uint64_t row_step = rows ? blob.row_step : row_bytes;
-  if (row_step < row_bytes || row_step * blob.height > blob.data.size ()) {
-    problem = "it holds " + std::to_string (blob.data.size ()) + " bytes of points, less than the " +
+  if (row_step < row_bytes || row_step * blob.height > blob.data.size()) {
+    problem = "it holds " + std::to_string (blob.data.size()) +
+              " bytes of points, less than the " +
               std::to_string (row_bytes * blob.height) + " its header announces";
     return false;
   }
@@ -342,16 +355,18 @@ hasConsistentLayout (const pcl::PCLPointCloud2& blob, bool rows, std::string& pr
 bool
 hasField (const pcl::PCLPointCloud2& header, const std::string& name)
 {
-  return std::any_of (header.fields.begin (), header.fields.end (),
-                      [&name] (const pcl::PCLPointField& field) { return field.name == name; });
+  return std::any_of (
+      header.fields.begin(),
+      header.fields.end(),
+      [&name] (const pcl::PCLPointField& field) { return field.name == name; });
 }
 
 template <typename PointT>
 bool
 fail (const char* function, const std::string& message, pcl::PointCloud<PointT>& cloud)
 {
-  PCL_ERROR ("[mid::io::%s] %s\n", function, message.c_str ());
-  cloud.clear ();
+  PCL_ERROR ("[mid::io::%s] %s\n", function, message.c_str());
+  cloud.clear();
   cloud.width = cloud.height = 0;
   return false;
 }
@@ -362,28 +377,30 @@ template <typename PointT>
 bool
 checkOrganizedCloud (const pcl::PointCloud<PointT>& cloud, std::string& problem)
 {
-  problem.clear ();
-  if (cloud.empty ()) {
+  problem.clear();
+  if (cloud.empty()) {
     problem = "the cloud is empty";
     return false;
   }
-  if (cloud.height < 2 || static_cast<std::size_t> (cloud.width) * cloud.height != cloud.size ()) {
-    problem = "the cloud is not organized (width " + std::to_string (cloud.width) + ", height " +
-              std::to_string (cloud.height) + ", " + std::to_string (cloud.size ()) +
+  if (cloud.height < 2 ||
+      static_cast<std::size_t> (cloud.width) * cloud.height != cloud.size()) {
+    problem = "the cloud is not organized (width " + std::to_string (cloud.width) +
+              ", height " + std::to_string (cloud.height) + ", " +
+              std::to_string (cloud.size()) +
               " points); an RGB-D frame with one point per pixel is required";
     return false;
   }
   std::vector<float> depths;
-  depths.reserve (cloud.size ());
+  depths.reserve (cloud.size());
   for (const auto& point : cloud)
     if (pcl::isXYZFinite (point))
       depths.push_back (std::abs (point.z));
-  if (depths.empty ()) {
+  if (depths.empty()) {
     problem = "the cloud has no valid depth (every point is NaN)";
     return false;
   }
-  auto middle = depths.begin () + static_cast<std::ptrdiff_t> (depths.size () / 2);
-  std::nth_element (depths.begin (), middle, depths.end ());
+  auto middle = depths.begin() + static_cast<std::ptrdiff_t> (depths.size() / 2);
+  std::nth_element (depths.begin(), middle, depths.end());
   if (*middle > kMaxPlausibleMedianDepth) {
     problem = "the median depth is " + std::to_string (*middle) +
               ", which looks like millimetres; coordinates must be in metres";
@@ -397,7 +414,9 @@ bool
 loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
 {
   if (!isReadableFile (path))
-    return fail ("loadOrganizedPCD", "cannot open '" + path + "' (missing or unreadable)", cloud);
+    return fail ("loadOrganizedPCD",
+                 "cannot open '" + path + "' (missing or unreadable)",
+                 cloud);
 
   if (isEmptyFile (path))
     return fail ("loadOrganizedPCD", "'" + path + "' is empty", cloud);
@@ -405,7 +424,9 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   const std::uint64_t file_size = std::filesystem::file_size (path, error);
   std::string problem;
   if (error || !announcesPlausibleSize (path, file_size, problem))
-    return fail ("loadOrganizedPCD", "'" + path + "' is not a valid PCD file: " + problem, cloud);
+    return fail ("loadOrganizedPCD",
+                 "'" + path + "' is not a valid PCD file: " + problem,
+                 cloud);
 
   pcl::PCDReader reader;
   pcl::PCLPointCloud2 header;
@@ -414,17 +435,22 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
   int version = 0, data_type = 0;
   unsigned int data_index = 0;
   int status = readQuietly ([&] {
-    return reader.readHeader (path, header, origin, orientation, version, data_type, data_index);
+    return reader.readHeader (
+        path, header, origin, orientation, version, data_type, data_index);
   });
-  if (status < 0 || header.fields.empty ())
-    return fail ("loadOrganizedPCD", "'" + path + "' is not a valid PCD file (bad header)", cloud);
+  if (status < 0 || header.fields.empty())
+    return fail ("loadOrganizedPCD",
+                 "'" + path + "' is not a valid PCD file (bad header)",
+                 cloud);
   if (!hasField (header, "x") || !hasField (header, "y") || !hasField (header, "z"))
     return fail ("loadOrganizedPCD", "'" + path + "' has no x, y, z fields", cloud);
   if (!hasField (header, "rgb") && !hasField (header, "rgba"))
-    return fail ("loadOrganizedPCD", "'" + path + "' has no color field (rgb or rgba)", cloud);
+    return fail (
+        "loadOrganizedPCD", "'" + path + "' has no color field (rgb or rgba)", cloud);
   if (header.height < 2)
     return fail ("loadOrganizedPCD",
-                 "'" + path + "' is not organized (height " + std::to_string (header.height) +
+                 "'" + path + "' is not organized (height " +
+                     std::to_string (header.height) +
                      "); an RGB-D frame with one point per pixel is required",
                  cloud);
 
@@ -439,10 +465,12 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
 
   pcl::PCLPointCloud2 blob;
   status = readQuietly ([&] {
-    return reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version);
+    return reader.read (
+        path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version);
   });
   if (status < 0)
-    return fail ("loadOrganizedPCD", "'" + path + "' could not be read (truncated or corrupt data)",
+    return fail ("loadOrganizedPCD",
+                 "'" + path + "' could not be read (truncated or corrupt data)",
                  cloud);
   if (!hasConsistentLayout (blob, true, problem))
     return fail ("loadOrganizedPCD", "'" + path + "' is corrupt: " + problem, cloud);
@@ -451,7 +479,9 @@ loadOrganizedPCD (const std::string& path, pcl::PointCloud<PointT>& cloud)
     return 0;
   });
   if (status < 0)
-    return fail ("loadOrganizedPCD", "'" + path + "' could not be converted (out of memory)", cloud);
+    return fail ("loadOrganizedPCD",
+                 "'" + path + "' could not be converted (out of memory)",
+                 cloud);
   if (!checkOrganizedCloud (cloud, problem))
     return fail ("loadOrganizedPCD", "'" + path + "': " + problem, cloud);
   return true;
@@ -469,33 +499,37 @@ backProject (const cv::Mat& color,
   std::string problem;
   if (!validateIntrinsics (intrinsics, problem))
     return fail ("rgbdToCloud", problem, cloud);
-  if (color.empty () || depth.empty ())
+  if (color.empty() || depth.empty())
     return fail ("rgbdToCloud", "the color or the depth image is empty", cloud);
-  if (color.depth () != CV_8U || (color.channels () != 3 && color.channels () != 1))
-    return fail ("rgbdToCloud", "the color image must be 8-bit with 1 or 3 channels", cloud);
-  if (depth.type () != CV_16UC1)
-    return fail ("rgbdToCloud", "the depth image must be a single-channel 16-bit image", cloud);
-  if (color.size () != depth.size ())
+  if (color.depth() != CV_8U || (color.channels() != 3 && color.channels() != 1))
+    return fail (
+        "rgbdToCloud", "the color image must be 8-bit with 1 or 3 channels", cloud);
+  if (depth.type() != CV_16UC1)
+    return fail (
+        "rgbdToCloud", "the depth image must be a single-channel 16-bit image", cloud);
+  if (color.size() != depth.size())
     return fail ("rgbdToCloud",
                  "image sizes differ: color " + std::to_string (color.cols) + "x" +
-                     std::to_string (color.rows) + ", depth " + std::to_string (depth.cols) +
-                     "x" + std::to_string (depth.rows),
+                     std::to_string (color.rows) + ", depth " +
+                     std::to_string (depth.cols) + "x" + std::to_string (depth.rows),
                  cloud);
   if (color.rows < 2 || color.cols < 2)
     return fail ("rgbdToCloud",
                  "the images are " + std::to_string (color.cols) + "x" +
-                     std::to_string (color.rows) + " pixels, too small for an RGB-D frame",
+                     std::to_string (color.rows) +
+                     " pixels, too small for an RGB-D frame",
                  cloud);
 
   cv::Mat bgr = color;
-  if (color.channels () == 1)
+  if (color.channels() == 1)
     cv::cvtColor (color, bgr, cv::COLOR_GRAY2BGR);
 
   cloud.width = static_cast<std::uint32_t> (depth.cols);
   cloud.height = static_cast<std::uint32_t> (depth.rows);
   cloud.is_dense = false;
-  cloud.resize (static_cast<std::size_t> (depth.cols) * static_cast<std::size_t> (depth.rows));
-  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  cloud.resize (static_cast<std::size_t> (depth.cols) *
+                static_cast<std::size_t> (depth.rows));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int v = 0; v < depth.rows; ++v) {
     const auto* depth_row = depth.ptr<std::uint16_t> (v);
     const auto* color_row = bgr.ptr<cv::Vec3b> (v);
@@ -533,7 +567,8 @@ rgbdToCloud (const cv::Mat& color,
     return backProject (color, depth, intrinsics, cloud);
   }
   catch (const std::exception& e) {
-    return fail ("rgbdToCloud", std::string ("cannot build the cloud: ") + e.what (), cloud);
+    return fail (
+        "rgbdToCloud", std::string ("cannot build the cloud: ") + e.what(), cloud);
   }
 }
 
@@ -561,9 +596,11 @@ loadRGBD (const std::string& color_path,
 {
   std::vector<std::uint8_t> color_data, depth_data;
   if (!readFile (color_path, color_data))
-    return fail ("loadRGBD", "cannot open '" + color_path + "' (missing or unreadable)", cloud);
+    return fail (
+        "loadRGBD", "cannot open '" + color_path + "' (missing or unreadable)", cloud);
   if (!readFile (depth_path, depth_data))
-    return fail ("loadRGBD", "cannot open '" + depth_path + "' (missing or unreadable)", cloud);
+    return fail (
+        "loadRGBD", "cannot open '" + depth_path + "' (missing or unreadable)", cloud);
   cv::Mat color, depth;
   std::string problem;
   if (!decodeImage (color_data, false, "'" + color_path + "'", color, problem) ||
@@ -572,15 +609,18 @@ loadRGBD (const std::string& color_path,
   return rgbdToCloud (color, depth, intrinsics, cloud);
 }
 
-#define MID_INSTANTIATE_ORGANIZED_CLOUD_IO(T)                                                  \
-  template bool checkOrganizedCloud<T> (const pcl::PointCloud<T>&, std::string&);             \
-  template bool loadOrganizedPCD<T> (const std::string&, pcl::PointCloud<T>&);                \
-  template bool rgbdToCloud<T> (const cv::Mat&, const cv::Mat&, const CameraIntrinsics&,     \
-                                pcl::PointCloud<T>&);                                         \
-  template bool decodeRGBD<T> (const std::vector<std::uint8_t>&,                              \
-                               const std::vector<std::uint8_t>&, const CameraIntrinsics&,      \
-                               pcl::PointCloud<T>&);                                           \
-  template bool loadRGBD<T> (const std::string&, const std::string&, const CameraIntrinsics&, \
+#define MID_INSTANTIATE_ORGANIZED_CLOUD_IO(T)                                          \
+  template bool checkOrganizedCloud<T> (const pcl::PointCloud<T>&, std::string&);      \
+  template bool loadOrganizedPCD<T> (const std::string&, pcl::PointCloud<T>&);         \
+  template bool rgbdToCloud<T> (                                                       \
+      const cv::Mat&, const cv::Mat&, const CameraIntrinsics&, pcl::PointCloud<T>&);   \
+  template bool decodeRGBD<T> (const std::vector<std::uint8_t>&,                       \
+                               const std::vector<std::uint8_t>&,                       \
+                               const CameraIntrinsics&,                                \
+                               pcl::PointCloud<T>&);                                   \
+  template bool loadRGBD<T> (const std::string&,                                       \
+                             const std::string&,                                       \
+                             const CameraIntrinsics&,                                  \
                              pcl::PointCloud<T>&);
 
 MID_INSTANTIATE_ORGANIZED_CLOUD_IO (pcl::PointXYZRGB)

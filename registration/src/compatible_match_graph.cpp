@@ -23,33 +23,39 @@ Oriented
 oriented (const KeypointCloud& cloud, pcl::index_t index)
 {
   const auto& k = cloud[static_cast<std::size_t> (index)];
-  return {k.getVector3fMap (), k.getNormalVector3fMap ()};
+  return {k.getVector3fMap(), k.getNormalVector3fMap()};
 }
 
 bool
-edgeWithin (const Eigen::Vector3f& a, const Eigen::Vector3f& b, const PairCriteria& criteria)
+edgeWithin (const Eigen::Vector3f& a,
+            const Eigen::Vector3f& b,
+            const PairCriteria& criteria)
 {
-  const float squared = (a - b).squaredNorm ();
+  const float squared = (a - b).squaredNorm();
   return squared >= criteria.min_edge_length * criteria.min_edge_length &&
          squared <= criteria.max_edge_length * criteria.max_edge_length;
 }
 
 /** The pair test: edges of both triangles in range, then the point pair features agree. */
 bool
-compatible (const Oriented& pa, const Oriented& qa, const Oriented& pb, const Oriented& qb,
+compatible (const Oriented& pa,
+            const Oriented& qa,
+            const Oriented& pb,
+            const Oriented& qb,
             const PairCriteria& criteria)
 {
-  if (!edgeWithin (pa.point, pb.point, criteria) || !edgeWithin (qa.point, qb.point, criteria))
+  if (!edgeWithin (pa.point, pb.point, criteria) ||
+      !edgeWithin (qa.point, qb.point, criteria))
     return false;
   // The distance component first: it is cheap and rejects most pairs before any angle.
-  if (std::abs ((pa.point - pb.point).norm () - (qa.point - qb.point).norm ()) >
+  if (std::abs ((pa.point - pb.point).norm() - (qa.point - qb.point).norm()) >
       criteria.max_distance_difference)
     return false;
   PointPairFeature fp, fq;
   return computePointPairFeature (pa.point, pa.normal, pb.point, pb.normal, fp) &&
          computePointPairFeature (qa.point, qa.normal, qb.point, qb.normal, fq) &&
-         arePointPairFeaturesSimilar (fp, fq, criteria.max_distance_difference,
-                                      criteria.max_angle_difference);
+         arePointPairFeaturesSimilar (
+             fp, fq, criteria.max_distance_difference, criteria.max_angle_difference);
 }
 
 } // namespace
@@ -59,13 +65,15 @@ CompatibleMatchGraph::CompatibleMatchGraph (const std::vector<UniqueMatch>& matc
                                             const KeypointCloud& target,
                                             const PairCriteria& criteria,
                                             bool allow_reversal)
-: successors_ (matches.size ())
+: successors_ (matches.size())
 {
   // For each source keypoint, the matches that have it on their P side when used as given, and
   // (in one frame) the matches that have it on their P side when reversed.
-  std::vector<std::vector<std::uint32_t>> forward (source->size ()), reversed (source->size ());
-  for (std::size_t b = 0; b < matches.size (); ++b) {
-    forward[static_cast<std::size_t> (matches[b].p)].push_back (static_cast<std::uint32_t> (2 * b));
+  std::vector<std::vector<std::uint32_t>> forward (source->size()),
+      reversed (source->size());
+  for (std::size_t b = 0; b < matches.size(); ++b) {
+    forward[static_cast<std::size_t> (matches[b].p)].push_back (
+        static_cast<std::uint32_t> (2 * b));
     if (allow_reversal)
       reversed[static_cast<std::size_t> (matches[b].q)].push_back (
           static_cast<std::uint32_t> (2 * b + 1));
@@ -76,12 +84,14 @@ CompatibleMatchGraph::CompatibleMatchGraph (const std::vector<UniqueMatch>& matc
   pcl::Indices nearby;
   std::vector<float> squared_distances;
   std::vector<std::uint32_t> candidates;
-  for (std::size_t a = 0; a < matches.size (); ++a) {
+  for (std::size_t a = 0; a < matches.size(); ++a) {
     const UniqueMatch& ma = matches[a];
     const Oriented pa = oriented (*source, ma.p), qa = oriented (target, ma.q);
-    tree.radiusSearch ((*source)[static_cast<std::size_t> (ma.p)], criteria.max_edge_length,
-                       nearby, squared_distances);
-    candidates.clear ();
+    tree.radiusSearch ((*source)[static_cast<std::size_t> (ma.p)],
+                       criteria.max_edge_length,
+                       nearby,
+                       squared_distances);
+    candidates.clear();
     for (const pcl::index_t k : nearby) {
       for (const std::uint32_t encoded : forward[static_cast<std::size_t> (k)])
         if (encoded / 2 > a)
@@ -90,7 +100,7 @@ CompatibleMatchGraph::CompatibleMatchGraph (const std::vector<UniqueMatch>& matc
         if (encoded / 2 > a)
           candidates.push_back (encoded);
     }
-    std::sort (candidates.begin (), candidates.end ());
+    std::sort (candidates.begin(), candidates.end());
     for (const std::uint32_t encoded : candidates) {
       const UniqueMatch& mb = matches[encoded / 2];
       // Two matches sharing a keypoint give a degenerate edge; in one frame, a keypoint on both
@@ -111,15 +121,15 @@ CompatibleMatchGraph::CompatibleMatchGraph (const std::vector<UniqueMatch>& matc
 bool
 CompatibleMatchGraph::hasEdge (std::size_t a, std::uint32_t encoded_b) const
 {
-  return std::binary_search (successors_[a].begin (), successors_[a].end (), encoded_b);
+  return std::binary_search (successors_[a].begin(), successors_[a].end(), encoded_b);
 }
 
 std::size_t
-CompatibleMatchGraph::size () const
+CompatibleMatchGraph::size() const
 {
   std::size_t edges = 0;
   for (const auto& list : successors_)
-    edges += list.size ();
+    edges += list.size();
   return edges;
 }
 

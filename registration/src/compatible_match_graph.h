@@ -49,7 +49,10 @@ public:
 
   /** \brief Neighbours of a with a larger rank, encoded 2 b + r, sorted ascending. */
   const std::vector<std::uint32_t>&
-  successors (std::size_t a) const { return successors_[a]; }
+  successors (std::size_t a) const
+  {
+    return successors_[a];
+  }
 
   /** \brief True if (b, r) is a successor of a. */
   bool

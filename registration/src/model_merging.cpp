@@ -11,8 +11,8 @@ namespace {
 void
 joinObservations (ModelInstance& target, const ModelInstance& extra)
 {
-  const std::set<pcl::index_t> seen (target.keypoints.begin (), target.keypoints.end ());
-  for (std::size_t o = 0; o < extra.keypoints.size (); ++o)
+  const std::set<pcl::index_t> seen (target.keypoints.begin(), target.keypoints.end());
+  for (std::size_t o = 0; o < extra.keypoints.size(); ++o)
     if (seen.count (extra.keypoints[o]) == 0) {
       target.keypoints.push_back (extra.keypoints[o]);
       target.landmarks.push_back (extra.landmarks[o]);
@@ -21,9 +21,12 @@ joinObservations (ModelInstance& target, const ModelInstance& extra)
 
 /** Add an instance, or join it to the existing instance whose pose coincides with it. */
 void
-addOrJoin (ObjectModel& model, const ModelInstance& instance, float max_angle, float max_distance)
+addOrJoin (ObjectModel& model,
+           const ModelInstance& instance,
+           float max_angle,
+           float max_distance)
 {
-  const Eigen::Vector3f center = Eigen::Vector3f::Zero ();
+  const Eigen::Vector3f center = Eigen::Vector3f::Zero();
   for (auto& existing : model.instances)
     if (posesCoincide (existing.pose, instance.pose, center, max_angle, max_distance)) {
       joinObservations (existing, instance);
@@ -35,26 +38,30 @@ addOrJoin (ObjectModel& model, const ModelInstance& instance, float max_angle, f
 } // namespace
 
 void
-mergeModel (ObjectModel& into, const ObjectModel& from, const Eigen::Matrix4f& into_to_from,
-            const std::vector<std::pair<int, int>>& same_landmarks, float max_angle,
+mergeModel (ObjectModel& into,
+            const ObjectModel& from,
+            const Eigen::Matrix4f& into_to_from,
+            const std::vector<std::pair<int, int>>& same_landmarks,
+            float max_angle,
             float max_distance)
 {
-  const Eigen::Matrix4f from_to_into = into_to_from.inverse ();
+  const Eigen::Matrix4f from_to_into = into_to_from.inverse();
   std::map<int, int> landmark_of;
   for (const auto& [l_into, l_from] : same_landmarks)
     landmark_of.emplace (l_from, l_into);
-  for (std::size_t l = 0; l < from.landmarks.size (); ++l) {
+  for (std::size_t l = 0; l < from.landmarks.size(); ++l) {
     if (landmark_of.count (static_cast<int> (l)) > 0)
       continue;
     pcl::PointNormal moved = from.landmarks[l];
-    moved.getVector3fMap () = from_to_into.topLeftCorner<3, 3> () * from.landmarks[l].getVector3fMap () +
-                              from_to_into.topRightCorner<3, 1> ();
-    moved.getNormalVector3fMap () =
-        from_to_into.topLeftCorner<3, 3> () * from.landmarks[l].getNormalVector3fMap ();
-    landmark_of[static_cast<int> (l)] = static_cast<int> (into.landmarks.size ());
+    moved.getVector3fMap() =
+        from_to_into.topLeftCorner<3, 3>() * from.landmarks[l].getVector3fMap() +
+        from_to_into.topRightCorner<3, 1>();
+    moved.getNormalVector3fMap() =
+        from_to_into.topLeftCorner<3, 3>() * from.landmarks[l].getNormalVector3fMap();
+    landmark_of[static_cast<int> (l)] = static_cast<int> (into.landmarks.size());
     into.landmarks.push_back (moved);
   }
-  for (std::size_t d = 0; d < from.descriptors.size (); ++d) {
+  for (std::size_t d = 0; d < from.descriptors.size(); ++d) {
     into.descriptors.push_back (from.descriptors[d]);
     into.descriptor_landmarks.push_back (landmark_of.at (from.descriptor_landmarks[d]));
   }
@@ -69,11 +76,15 @@ mergeModel (ObjectModel& into, const ObjectModel& from, const Eigen::Matrix4f& i
 }
 
 void
-addInstance (ObjectModel& model, const ModelInstance& instance,
-             const SIFTDescriptorCloud& frame_descriptors, float max_angle, float max_distance)
+addInstance (ObjectModel& model,
+             const ModelInstance& instance,
+             const SIFTDescriptorCloud& frame_descriptors,
+             float max_angle,
+             float max_distance)
 {
-  for (std::size_t o = 0; o < instance.keypoints.size (); ++o) {
-    model.descriptors.push_back (frame_descriptors[static_cast<std::size_t> (instance.keypoints[o])]);
+  for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+    model.descriptors.push_back (
+        frame_descriptors[static_cast<std::size_t> (instance.keypoints[o])]);
     model.descriptor_landmarks.push_back (instance.landmarks[o]);
   }
   addOrJoin (model, instance, max_angle, max_distance);

@@ -1,8 +1,7 @@
-#include <mid/registration/multi_instance_model_builder.h>
-
 #include "point_set_graph.h"
 
 #include <mid/registration/model_refinement.h>
+#include <mid/registration/multi_instance_model_builder.h>
 
 #include <Eigen/Geometry>
 #include <pcl/console/print.h>
@@ -22,12 +21,14 @@ namespace {
 class LandmarkClasses
 {
 public:
-  LandmarkClasses (std::size_t keypoints, const TripletClusters& clusters) : parent_ (keypoints)
+  LandmarkClasses (std::size_t keypoints, const TripletClusters& clusters)
+  : parent_ (keypoints)
   {
-    std::iota (parent_.begin (), parent_.end (), std::size_t{0});
+    std::iota (parent_.begin(), parent_.end(), std::size_t{0});
     for (const auto& cluster : clusters)
       for (const auto& c : cluster.correspondences)
-        unite (static_cast<std::size_t> (c.index_query), static_cast<std::size_t> (c.index_match));
+        unite (static_cast<std::size_t> (c.index_query),
+               static_cast<std::size_t> (c.index_match));
   }
 
   std::size_t
@@ -56,16 +57,17 @@ void
 estimateLandmarkNormals (ObjectModel& model, const KeypointCloud& keypoints)
 {
   std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> sums (
-      model.landmarks.size (), Eigen::Vector3f::Zero ());
+      model.landmarks.size(), Eigen::Vector3f::Zero());
   for (const auto& instance : model.instances) {
-    const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3> ();
-    for (std::size_t o = 0; o < instance.keypoints.size (); ++o)
+    const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3>();
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
       sums[static_cast<std::size_t> (instance.landmarks[o])] +=
-          rotation.transpose () *
-          keypoints[static_cast<std::size_t> (instance.keypoints[o])].getNormalVector3fMap ();
+          rotation.transpose() *
+          keypoints[static_cast<std::size_t> (instance.keypoints[o])]
+              .getNormalVector3fMap();
   }
-  for (std::size_t l = 0; l < model.landmarks.size (); ++l) {
-    model.landmarks[l].getNormalVector3fMap () = sums[l].normalized ();
+  for (std::size_t l = 0; l < model.landmarks.size(); ++l) {
+    model.landmarks[l].getNormalVector3fMap() = sums[l].normalized();
     model.landmarks[l].curvature = 0.0f;
   }
 }
@@ -74,48 +76,61 @@ estimateLandmarkNormals (ObjectModel& model, const KeypointCloud& keypoints)
 void
 centerModelFrame (ObjectModel& model)
 {
-  Eigen::Vector3f centroid = Eigen::Vector3f::Zero ();
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
   for (const auto& l : model.landmarks)
-    centroid += l.getVector3fMap ();
-  centroid /= static_cast<float> (std::max<std::size_t> (1, model.landmarks.size ()));
+    centroid += l.getVector3fMap();
+  centroid /= static_cast<float> (std::max<std::size_t> (1, model.landmarks.size()));
   for (auto& l : model.landmarks)
-    l.getVector3fMap () -= centroid;
+    l.getVector3fMap() -= centroid;
   for (auto& instance : model.instances)
-    instance.pose.topRightCorner<3, 1> () += instance.pose.topLeftCorner<3, 3> () * centroid;
+    instance.pose.topRightCorner<3, 1>() +=
+        instance.pose.topLeftCorner<3, 3>() * centroid;
 }
 
 } // namespace
 
 bool
-MultiInstanceModelBuilder::checkInputs () const
+MultiInstanceModelBuilder::checkInputs() const
 {
   const char* name = "[mid::MultiInstanceModelBuilder::compute]";
   if (!input_ || !descriptors_ || !clusters_) {
     PCL_ERROR ("%s Keypoints, descriptors and clusters must all be given.\n", name);
     return false;
   }
-  if (input_->size () != descriptors_->size ()) {
-    PCL_ERROR ("%s %zu keypoints but %zu descriptors.\n", name, input_->size (), descriptors_->size ());
+  if (input_->size() != descriptors_->size()) {
+    PCL_ERROR ("%s %zu keypoints but %zu descriptors.\n",
+               name,
+               input_->size(),
+               descriptors_->size());
     return false;
   }
-  if (!(shared_point_weight_ >= 0.0) || refinement_iterations_ < 0 || !(duplicate_angle_ >= 0.0f) ||
-      !(duplicate_distance_ >= 0.0f)) {
-    PCL_ERROR ("%s Invalid parameter: shared point weight %g, refinement iterations %d, duplicate "
-               "thresholds %g rad / %g m (all >= 0).\n", name, shared_point_weight_,
-               refinement_iterations_, static_cast<double> (duplicate_angle_),
+  if (!(shared_point_weight_ >= 0.0) || refinement_iterations_ < 0 ||
+      !(duplicate_angle_ >= 0.0f) || !(duplicate_distance_ >= 0.0f)) {
+    PCL_ERROR ("%s Invalid parameter: shared point weight %g, refinement iterations "
+               "%d, duplicate "
+               "thresholds %g rad / %g m (all >= 0).\n",
+               name,
+               shared_point_weight_,
+               refinement_iterations_,
+               static_cast<double> (duplicate_angle_),
                static_cast<double> (duplicate_distance_));
     return false;
   }
   for (const auto& cluster : *clusters_) {
-    if (!cluster.transformation.allFinite ()) {
+    if (!cluster.transformation.allFinite()) {
       PCL_ERROR ("%s A cluster has a non-finite pose.\n", name);
       return false;
     }
     for (const auto& c : cluster.correspondences)
       if (c.index_query < 0 || c.index_match < 0 ||
-          static_cast<std::size_t> (std::max (c.index_query, c.index_match)) >= input_->size ()) {
-        PCL_ERROR ("%s A cluster refers to keypoint %d -> %d, outside the %zu keypoints.\n", name,
-                   c.index_query, c.index_match, input_->size ());
+          static_cast<std::size_t> (std::max (c.index_query, c.index_match)) >=
+              input_->size()) {
+        PCL_ERROR (
+            "%s A cluster refers to keypoint %d -> %d, outside the %zu keypoints.\n",
+            name,
+            c.index_query,
+            c.index_match,
+            input_->size());
         return false;
       }
   }
@@ -125,85 +140,93 @@ MultiInstanceModelBuilder::checkInputs () const
 bool
 MultiInstanceModelBuilder::compute (ObjectModels& models)
 {
-  models.clear ();
-  unused_keypoints_.clear ();
-  if (!checkInputs ())
+  models.clear();
+  unused_keypoints_.clear();
+  if (!checkInputs())
     return false;
   const KeypointCloud& keypoints = *input_;
   const TripletClusters& clusters = *clusters_;
 
   const detail::PointSetGraph graph (clusters, shared_point_weight_);
-  LandmarkClasses classes (keypoints.size (), clusters);
-  std::vector<bool> used (keypoints.size (), false);
+  LandmarkClasses classes (keypoints.size(), clusters);
+  std::vector<bool> used (keypoints.size(), false);
 
-  for (const auto& component : graph.components ()) {
+  for (const auto& component : graph.components()) {
     std::size_t reference = 0;
     detail::Transforms to_reference;
     std::vector<int> group;
-    const std::size_t groups = graph.solveComponent (component, reference, to_reference, group);
+    const std::size_t groups =
+        graph.solveComponent (component, reference, to_reference, group);
 
     // One instance per group: the pose of its node nearest to the reference (model -> camera
     // is the inverse of camera -> reference frame); its keypoints are all of its nodes' points.
     std::vector<std::set<pcl::index_t>> group_points (groups);
-    detail::Transforms group_pose (groups, Eigen::Matrix4f::Zero ());
+    detail::Transforms group_pose (groups, Eigen::Matrix4f::Zero());
     std::vector<bool> has_pose (groups, false);
     for (const std::size_t n : component) {
       const auto g = static_cast<std::size_t> (group[n]);
-      group_points[g].insert (graph.points (n).begin (), graph.points (n).end ());
+      group_points[g].insert (graph.points (n).begin(), graph.points (n).end());
       if (!has_pose[g] || n == reference) {
-        group_pose[g] = to_reference[n].inverse ();
+        group_pose[g] = to_reference[n].inverse();
         has_pose[g] = true;
       }
     }
     // Merge groups whose poses coincide: one instance seen through sets that share no keypoint.
-    Eigen::Vector3f center = Eigen::Vector3f::Zero ();
+    Eigen::Vector3f center = Eigen::Vector3f::Zero();
     std::size_t count = 0;
     for (const std::size_t n : component)
       for (const auto k : graph.points (n)) {
-        center += (to_reference[n].topLeftCorner<3, 3> () *
-                   keypoints[static_cast<std::size_t> (k)].getVector3fMap ()) +
-                  to_reference[n].topRightCorner<3, 1> ();
+        center += (to_reference[n].topLeftCorner<3, 3>() *
+                   keypoints[static_cast<std::size_t> (k)].getVector3fMap()) +
+                  to_reference[n].topRightCorner<3, 1>();
         ++count;
       }
     center /= static_cast<float> (std::max<std::size_t> (1, count));
     std::vector<std::size_t> instance_of_group (groups);
     std::vector<std::size_t> kept;
     for (std::size_t g = 0; g < groups; ++g) {
-      instance_of_group[g] = kept.size ();
-      for (std::size_t i = 0; i < kept.size (); ++i)
-        if (posesCoincide (group_pose[kept[i]], group_pose[g], center, duplicate_angle_,
+      instance_of_group[g] = kept.size();
+      for (std::size_t i = 0; i < kept.size(); ++i)
+        if (posesCoincide (group_pose[kept[i]],
+                           group_pose[g],
+                           center,
+                           duplicate_angle_,
                            duplicate_distance_)) {
           instance_of_group[g] = i;
           break;
         }
-      if (instance_of_group[g] == kept.size ())
+      if (instance_of_group[g] == kept.size())
         kept.push_back (g);
     }
 
     ObjectModel model;
-    model.instances.resize (kept.size ());
-    const std::size_t reference_instance = instance_of_group[static_cast<std::size_t> (group[reference])];
-    std::vector<std::set<pcl::index_t>> instance_points (kept.size ());
+    model.instances.resize (kept.size());
+    const std::size_t reference_instance =
+        instance_of_group[static_cast<std::size_t> (group[reference])];
+    std::vector<std::set<pcl::index_t>> instance_points (kept.size());
     for (std::size_t g = 0; g < groups; ++g)
-      instance_points[instance_of_group[g]].insert (group_points[g].begin (), group_points[g].end ());
+      instance_points[instance_of_group[g]].insert (group_points[g].begin(),
+                                                    group_points[g].end());
     std::map<std::size_t, int> landmark_of_class;
     std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> sums;
     std::vector<int> observations;
-    for (std::size_t i = 0; i < kept.size (); ++i) {
+    for (std::size_t i = 0; i < kept.size(); ++i) {
       ModelInstance& instance = model.instances[i];
       instance.pose = group_pose[kept[i]];
-      const Eigen::Matrix4f camera_to_model = instance.pose.inverse ();
+      const Eigen::Matrix4f camera_to_model = instance.pose.inverse();
       for (const auto k : instance_points[i]) {
-        const auto inserted = landmark_of_class.emplace (classes.find (static_cast<std::size_t> (k)),
-                                                         static_cast<int> (sums.size ()));
+        const auto inserted =
+            landmark_of_class.emplace (classes.find (static_cast<std::size_t> (k)),
+                                       static_cast<int> (sums.size()));
         if (inserted.second) {
-          sums.emplace_back (Eigen::Vector3f::Zero ());
+          sums.emplace_back (Eigen::Vector3f::Zero());
           observations.push_back (0);
         }
         const int l = inserted.first->second;
         sums[static_cast<std::size_t> (l)] +=
-            camera_to_model.topLeftCorner<3, 3> () * keypoints[static_cast<std::size_t> (k)].getVector3fMap () +
-            camera_to_model.topRightCorner<3, 1> ();
+            camera_to_model.topLeftCorner<3, 3>() *
+                keypoints[static_cast<std::size_t> (k)].getVector3fMap() +
+            camera_to_model.topRightCorner<3, 1>();
         ++observations[static_cast<std::size_t> (l)];
         instance.keypoints.push_back (k);
         instance.landmarks.push_back (l);
@@ -212,9 +235,10 @@ MultiInstanceModelBuilder::compute (ObjectModels& models)
         used[static_cast<std::size_t> (k)] = true;
       }
     }
-    model.landmarks.resize (sums.size ());
-    for (std::size_t l = 0; l < sums.size (); ++l)
-      model.landmarks[l].getVector3fMap () = sums[l] / static_cast<float> (observations[l]);
+    model.landmarks.resize (sums.size());
+    for (std::size_t l = 0; l < sums.size(); ++l)
+      model.landmarks[l].getVector3fMap() =
+          sums[l] / static_cast<float> (observations[l]);
 
     if (refinement_iterations_ > 0)
       refineModel (model, keypoints, refinement_iterations_, reference_instance);
@@ -226,10 +250,11 @@ MultiInstanceModelBuilder::compute (ObjectModels& models)
     models.push_back (std::move (model));
   }
 
-  std::stable_sort (models.begin (), models.end (), [] (const ObjectModel& a, const ObjectModel& b) {
-    return a.descriptors.size () > b.descriptors.size ();
-  });
-  for (std::size_t k = 0; k < keypoints.size (); ++k)
+  std::stable_sort (
+      models.begin(), models.end(), [] (const ObjectModel& a, const ObjectModel& b) {
+        return a.descriptors.size() > b.descriptors.size();
+      });
+  for (std::size_t k = 0; k < keypoints.size(); ++k)
     if (!used[k])
       unused_keypoints_.push_back (static_cast<pcl::index_t> (k));
   return true;

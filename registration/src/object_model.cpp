@@ -8,45 +8,55 @@
 namespace mid {
 
 void
-updateInstanceError (const ObjectModel& model, const KeypointCloud& keypoints,
+updateInstanceError (const ObjectModel& model,
+                     const KeypointCloud& keypoints,
                      ModelInstance& instance)
 {
-  if (instance.keypoints.empty ()) {
+  if (instance.keypoints.empty()) {
     instance.rms_error = 0.0f;
     return;
   }
-  const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3> ();
-  const Eigen::Vector3f translation = instance.pose.topRightCorner<3, 1> ();
+  const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3>();
+  const Eigen::Vector3f translation = instance.pose.topRightCorner<3, 1>();
   float sum = 0.0f;
-  for (std::size_t o = 0; o < instance.keypoints.size (); ++o) {
+  for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
     const Eigen::Vector3f landmark =
-        model.landmarks[static_cast<std::size_t> (instance.landmarks[o])].getVector3fMap ();
+        model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
+            .getVector3fMap();
     const Eigen::Vector3f observed =
-        keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap ();
-    sum += (rotation * landmark + translation - observed).squaredNorm ();
+        keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap();
+    sum += (rotation * landmark + translation - observed).squaredNorm();
   }
-  instance.rms_error = std::sqrt (sum / static_cast<float> (instance.keypoints.size ()));
+  instance.rms_error = std::sqrt (sum / static_cast<float> (instance.keypoints.size()));
 }
 
 bool
-posesCoincide (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector3f& center,
-               float max_angle, float max_distance)
+posesCoincide (const Eigen::Matrix4f& a,
+               const Eigen::Matrix4f& b,
+               const Eigen::Vector3f& center,
+               float max_angle,
+               float max_distance)
 {
-  const Eigen::Matrix3f relative = a.topLeftCorner<3, 3> ().transpose () * b.topLeftCorner<3, 3> ();
-  const float angle = Eigen::AngleAxisf (relative).angle ();
-  const Eigen::Vector3f pa = a.topLeftCorner<3, 3> () * center + a.topRightCorner<3, 1> ();
-  const Eigen::Vector3f pb = b.topLeftCorner<3, 3> () * center + b.topRightCorner<3, 1> ();
-  return angle < max_angle && (pa - pb).norm () < max_distance;
+  const Eigen::Matrix3f relative =
+      a.topLeftCorner<3, 3>().transpose() * b.topLeftCorner<3, 3>();
+  const float angle = Eigen::AngleAxisf (relative).angle();
+  const Eigen::Vector3f pa =
+      a.topLeftCorner<3, 3>() * center + a.topRightCorner<3, 1>();
+  const Eigen::Vector3f pb =
+      b.topLeftCorner<3, 3>() * center + b.topRightCorner<3, 1>();
+  return angle < max_angle && (pa - pb).norm() < max_distance;
 }
 
 void
 updateModelDiameter (ObjectModel& model)
 {
   float diameter = 0.0f;
-  for (std::size_t i = 0; i < model.landmarks.size (); ++i)
-    for (std::size_t j = i + 1; j < model.landmarks.size (); ++j)
-      diameter = std::max (diameter, (model.landmarks[i].getVector3fMap () -
-                                      model.landmarks[j].getVector3fMap ()).norm ());
+  for (std::size_t i = 0; i < model.landmarks.size(); ++i)
+    for (std::size_t j = i + 1; j < model.landmarks.size(); ++j)
+      diameter = std::max (
+          diameter,
+          (model.landmarks[i].getVector3fMap() - model.landmarks[j].getVector3fMap())
+              .norm());
   model.diameter = diameter;
 }
 

@@ -27,11 +27,11 @@ struct EIGEN_ALIGN16 ModelFilePoint
 } // namespace detail
 } // namespace mid
 
-POINT_CLOUD_REGISTER_POINT_STRUCT (mid::detail::ModelFilePoint,
-                                   (float, x, x) (float, y, y) (float, z, z)
-                                   (float, normal_x, normal_x) (float, normal_y, normal_y)
-                                   (float, normal_z, normal_z) (int, landmark, landmark)
-                                   (float[128], descriptor, descriptor))
+POINT_CLOUD_REGISTER_POINT_STRUCT (
+    mid::detail::ModelFilePoint,
+    (float, x, x) (float, y, y) (float, z, z) (float, normal_x, normal_x) (
+        float, normal_y, normal_y) (float, normal_z, normal_z) (
+        int, landmark, landmark) (float[128], descriptor, descriptor))
 
 namespace mid {
 
@@ -44,14 +44,14 @@ dataPathOf (const std::string& json_path)
 {
   std::filesystem::path data (json_path);
   data.replace_extension (".pcd");
-  return data.string ();
+  return data.string();
 }
 
 bool
 fail (const std::string& message, ObjectModel& model)
 {
-  PCL_ERROR ("[mid::loadObjectModel] %s\n", message.c_str ());
-  model = ObjectModel ();
+  PCL_ERROR ("[mid::loadObjectModel] %s\n", message.c_str());
+  model = ObjectModel();
   return false;
 }
 
@@ -69,39 +69,47 @@ findNumber (const std::string& json, const std::string& key, double& value)
 } // namespace
 
 bool
-saveObjectModel (const std::string& path, const ObjectModel& model, io::StagedFiles* staged)
+saveObjectModel (const std::string& path,
+                 const ObjectModel& model,
+                 io::StagedFiles* staged)
 {
-  if (std::filesystem::path (path).extension () != ".json") {
-    PCL_ERROR ("[mid::saveObjectModel] '%s' must end in .json\n", path.c_str ());
+  if (std::filesystem::path (path).extension() != ".json") {
+    PCL_ERROR ("[mid::saveObjectModel] '%s' must end in .json\n", path.c_str());
     return false;
   }
   pcl::PointCloud<ModelFilePoint> rows;
-  for (std::size_t d = 0; d < model.descriptors.size (); ++d) {
-    const auto& landmark = model.landmarks[static_cast<std::size_t> (model.descriptor_landmarks[d])];
+  for (std::size_t d = 0; d < model.descriptors.size(); ++d) {
+    const auto& landmark =
+        model.landmarks[static_cast<std::size_t> (model.descriptor_landmarks[d])];
     ModelFilePoint row;
-    row.getVector3fMap () = landmark.getVector3fMap ();
-    row.getNormalVector3fMap () = landmark.getNormalVector3fMap ();
+    row.getVector3fMap() = landmark.getVector3fMap();
+    row.getNormalVector3fMap() = landmark.getNormalVector3fMap();
     row.landmark = model.descriptor_landmarks[d];
-    std::copy (model.descriptors[d].histogram, model.descriptors[d].histogram + 128, row.descriptor);
+    std::copy (model.descriptors[d].histogram,
+               model.descriptors[d].histogram + 128,
+               row.descriptor);
     rows.push_back (row);
   }
   io::StagedFiles own;
   io::StagedFiles& files = staged != nullptr ? *staged : own;
   const std::string json_temporary = files.stage (path);
   const std::string data_temporary = files.stage (dataPathOf (path));
-  if (json_temporary.empty () || data_temporary.empty ())
+  if (json_temporary.empty() || data_temporary.empty())
     return false;
   std::ofstream json (json_temporary);
-  json << "{\n  \"format\": \"mid-object-model\",\n  \"version\": " << OBJECT_MODEL_FILE_VERSION
-       << ",\n  \"data\": \"" << std::filesystem::path (dataPathOf (path)).filename ().string ()
-       << "\",\n  \"landmarks\": " << model.landmarks.size () << ",\n  \"descriptors\": "
-       << model.descriptors.size () << ",\n  \"diameter\": " << model.diameter << "\n}\n";
-  json.close ();
-  if (!json || rows.empty () ||
+  json << "{\n  \"format\": \"mid-object-model\",\n  \"version\": "
+       << OBJECT_MODEL_FILE_VERSION << ",\n  \"data\": \""
+       << std::filesystem::path (dataPathOf (path)).filename().string()
+       << "\",\n  \"landmarks\": " << model.landmarks.size()
+       << ",\n  \"descriptors\": " << model.descriptors.size()
+       << ",\n  \"diameter\": " << model.diameter << "\n}\n";
+  json.close();
+  if (!json || rows.empty() ||
       pcl::io::savePCDFileBinaryCompressed (data_temporary, rows) != 0 ||
-      (staged == nullptr && !files.commit ())) {
-    PCL_ERROR ("[mid::saveObjectModel] cannot write '%s'%s\n", path.c_str (),
-               rows.empty () ? ": the model has no descriptors" : "");
+      (staged == nullptr && !files.commit())) {
+    PCL_ERROR ("[mid::saveObjectModel] cannot write '%s'%s\n",
+               path.c_str(),
+               rows.empty() ? ": the model has no descriptors" : "");
     return false;
   }
   return true;
@@ -110,59 +118,72 @@ saveObjectModel (const std::string& path, const ObjectModel& model, io::StagedFi
 bool
 loadObjectModel (const std::string& path, ObjectModel& model)
 {
-  model = ObjectModel ();
+  model = ObjectModel();
   std::ifstream file (path);
   if (!file)
     return fail ("cannot open '" + path + "' (missing or unreadable)", model);
   std::stringstream text;
-  text << file.rdbuf ();
-  const std::string json = text.str ();
-  if (json.find ("\"format\": \"mid-object-model\"") == std::string::npos)
-    return fail ("'" + path + "' is not a mid object model (no \"format\": \"mid-object-model\")",
+  text << file.rdbuf();
+  const std::string json = text.str();
+  if (json.find (R"("format": "mid-object-model")") == std::string::npos)
+    return fail ("'" + path +
+                     R"(' is not a mid object model (no "format": "mid-object-model"))",
                  model);
   double version = 0.0, landmarks = 0.0, descriptors = 0.0, diameter = 0.0;
-  if (!findNumber (json, "version", version) || !findNumber (json, "landmarks", landmarks) ||
-      !findNumber (json, "descriptors", descriptors) || !findNumber (json, "diameter", diameter))
-    return fail ("'" + path + "' is truncated or lacks version, landmarks, descriptors or diameter",
-                 model);
+  if (!findNumber (json, "version", version) ||
+      !findNumber (json, "landmarks", landmarks) ||
+      !findNumber (json, "descriptors", descriptors) ||
+      !findNumber (json, "diameter", diameter))
+    return fail (
+        "'" + path +
+            "' is truncated or lacks version, landmarks, descriptors or diameter",
+        model);
   if (static_cast<int> (version) != OBJECT_MODEL_FILE_VERSION)
-    return fail ("'" + path + "' is a model file of version " + std::to_string (static_cast<int> (version)) +
-                     "; this build reads version " + std::to_string (OBJECT_MODEL_FILE_VERSION),
+    return fail ("'" + path + "' is a model file of version " +
+                     std::to_string (static_cast<int> (version)) +
+                     "; this build reads version " +
+                     std::to_string (OBJECT_MODEL_FILE_VERSION),
                  model);
   const std::string data_path = dataPathOf (path);
   pcl::PointCloud<ModelFilePoint> rows;
   {
-    const auto level = pcl::console::getVerbosityLevel ();
+    const auto level = pcl::console::getVerbosityLevel();
     pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
-    const int status = std::filesystem::exists (data_path) ? pcl::io::loadPCDFile (data_path, rows) : -1;
+    const int status = std::filesystem::exists (data_path)
+                           ? pcl::io::loadPCDFile (data_path, rows)
+                           : -1;
     pcl::console::setVerbosityLevel (level);
     if (status != 0)
-      return fail ("cannot read the model data '" + data_path + "' (missing, truncated or corrupt)",
+      return fail ("cannot read the model data '" + data_path +
+                       "' (missing, truncated or corrupt)",
                    model);
   }
-  if (rows.size () != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
-    return fail ("'" + data_path + "' holds " + std::to_string (rows.size ()) +
-                     " descriptors, the header says " + std::to_string (static_cast<long> (descriptors)) +
+  if (rows.size() != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
+    return fail ("'" + data_path + "' holds " + std::to_string (rows.size()) +
+                     " descriptors, the header says " +
+                     std::to_string (static_cast<long> (descriptors)) +
                      " (truncated or inconsistent)",
                  model);
   model.landmarks.resize (static_cast<std::size_t> (landmarks));
-  std::vector<bool> seen (model.landmarks.size (), false);
+  std::vector<bool> seen (model.landmarks.size(), false);
   for (const auto& row : rows) {
-    if (row.landmark < 0 || static_cast<std::size_t> (row.landmark) >= model.landmarks.size () ||
-        !row.getVector3fMap ().allFinite ())
-      return fail ("'" + data_path + "' refers to landmark " + std::to_string (row.landmark) +
-                       " of " + std::to_string (model.landmarks.size ()) + " or holds NaN",
+    if (row.landmark < 0 ||
+        static_cast<std::size_t> (row.landmark) >= model.landmarks.size() ||
+        !row.getVector3fMap().allFinite())
+      return fail ("'" + data_path + "' refers to landmark " +
+                       std::to_string (row.landmark) + " of " +
+                       std::to_string (model.landmarks.size()) + " or holds NaN",
                    model);
     auto& landmark = model.landmarks[static_cast<std::size_t> (row.landmark)];
-    landmark.getVector3fMap () = row.getVector3fMap ();
-    landmark.getNormalVector3fMap () = row.getNormalVector3fMap ();
+    landmark.getVector3fMap() = row.getVector3fMap();
+    landmark.getNormalVector3fMap() = row.getNormalVector3fMap();
     seen[static_cast<std::size_t> (row.landmark)] = true;
     SIFTDescriptor descriptor;
     std::copy (row.descriptor, row.descriptor + 128, descriptor.histogram);
     model.descriptors.push_back (descriptor);
     model.descriptor_landmarks.push_back (row.landmark);
   }
-  if (std::find (seen.begin (), seen.end (), false) != seen.end ())
+  if (std::find (seen.begin(), seen.end(), false) != seen.end())
     return fail ("'" + data_path + "' lacks some landmarks", model);
   model.diameter = static_cast<float> (diameter);
   return true;

@@ -10,7 +10,8 @@
 namespace mid {
 namespace detail {
 
-using Transforms = std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>;
+using Transforms =
+    std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>;
 
 /** \brief The graph of point sets of the paper's "Initial Model Creation": node 2c is cluster
   * c's source set and 2c+1 its target set; a cluster edge carries its pose and its rms as weight,
@@ -35,15 +36,23 @@ public:
     * \return the number of groups
     */
   std::size_t
-  solveComponent (const std::vector<std::size_t>& component, std::size_t& reference,
-                  Transforms& to_reference, std::vector<int>& group) const;
+  solveComponent (const std::vector<std::size_t>& component,
+                  std::size_t& reference,
+                  Transforms& to_reference,
+                  std::vector<int>& group) const;
 
   /** \brief The keypoints of a node. */
   const pcl::Indices&
-  points (std::size_t node) const { return points_[node]; }
+  points (std::size_t node) const
+  {
+    return points_[node];
+  }
 
   std::size_t
-  size () const { return points_.size (); }
+  size () const
+  {
+    return points_.size();
+  }
 
 private:
   struct Edge

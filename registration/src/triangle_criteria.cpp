@@ -1,6 +1,5 @@
-#include <mid/registration/triangle_criteria.h>
-
 #include <mid/features/point_pair_feature.h>
+#include <mid/registration/triangle_criteria.h>
 
 #include <Eigen/Geometry>
 
@@ -40,21 +39,23 @@ closestPointOnTriangle (const Eigen::Vector3f& p, const Triangle& t)
     return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
   const float denominator = va + vb + vc;
   if (!(denominator > 0.0f)) // degenerate triangle: fall back to its vertices
-    return (p - a).squaredNorm () < (p - b).squaredNorm () ? a : b;
+    return (p - a).squaredNorm() < (p - b).squaredNorm() ? a : b;
   return a + ab * (vb / denominator) + ac * (vc / denominator);
 }
 
 /** Distance between segments p1q1 and p2q2 (Ericson, 5.1.9). */
 float
-segmentDistance (const Eigen::Vector3f& p1, const Eigen::Vector3f& q1,
-                 const Eigen::Vector3f& p2, const Eigen::Vector3f& q2)
+segmentDistance (const Eigen::Vector3f& p1,
+                 const Eigen::Vector3f& q1,
+                 const Eigen::Vector3f& p2,
+                 const Eigen::Vector3f& q2)
 {
   constexpr float kEpsilon = 1e-12f;
   const Eigen::Vector3f d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const float a = d1.squaredNorm (), e = d2.squaredNorm (), f = d2.dot (r);
+  const float a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot (r);
   float s = 0.0f, t = 0.0f;
   if (a <= kEpsilon && e <= kEpsilon)
-    return r.norm ();
+    return r.norm();
   if (a <= kEpsilon)
     t = std::clamp (f / e, 0.0f, 1.0f);
   else {
@@ -63,7 +64,9 @@ segmentDistance (const Eigen::Vector3f& p1, const Eigen::Vector3f& q1,
       s = std::clamp (-c / a, 0.0f, 1.0f);
     else {
       const float b = d1.dot (d2), denominator = a * e - b * b;
-      s = denominator > kEpsilon ? std::clamp ((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
+      s = denominator > kEpsilon
+              ? std::clamp ((b * f - c * e) / denominator, 0.0f, 1.0f)
+              : 0.0f;
       t = (b * s + f) / e;
       if (t < 0.0f) {
         t = 0.0f;
@@ -75,12 +78,14 @@ segmentDistance (const Eigen::Vector3f& p1, const Eigen::Vector3f& q1,
       }
     }
   }
-  return ((p1 + s * d1) - (p2 + t * d2)).norm ();
+  return ((p1 + s * d1) - (p2 + t * d2)).norm();
 }
 
 /** True if segment pq pierces triangle t (Moeller-Trumbore restricted to the segment). */
 bool
-segmentIntersectsTriangle (const Eigen::Vector3f& p, const Eigen::Vector3f& q, const Triangle& t)
+segmentIntersectsTriangle (const Eigen::Vector3f& p,
+                           const Eigen::Vector3f& q,
+                           const Triangle& t)
 {
   const Eigen::Vector3f direction = q - p;
   const Eigen::Vector3f e1 = t[1] - t[0], e2 = t[2] - t[0];
@@ -102,12 +107,14 @@ segmentIntersectsTriangle (const Eigen::Vector3f& p, const Eigen::Vector3f& q, c
 }
 
 float
-segmentTriangleDistance (const Eigen::Vector3f& p, const Eigen::Vector3f& q, const Triangle& t)
+segmentTriangleDistance (const Eigen::Vector3f& p,
+                         const Eigen::Vector3f& q,
+                         const Triangle& t)
 {
   if (segmentIntersectsTriangle (p, q, t))
     return 0.0f;
-  float distance = std::min ((closestPointOnTriangle (p, t) - p).norm (),
-                             (closestPointOnTriangle (q, t) - q).norm ());
+  float distance = std::min ((closestPointOnTriangle (p, t) - p).norm(),
+                             (closestPointOnTriangle (q, t) - q).norm());
   for (int k = 0; k < 3; ++k)
     distance = std::min (distance, segmentDistance (p, q, t[k], t[(k + 1) % 3]));
   return distance;
@@ -119,7 +126,7 @@ bool
 hasEdgeLengthsWithin (const Triangle& triangle, float min_length, float max_length)
 {
   for (int k = 0; k < 3; ++k) {
-    const float length = (triangle[(k + 1) % 3] - triangle[k]).norm ();
+    const float length = (triangle[(k + 1) % 3] - triangle[k]).norm();
     if (!(length >= min_length && length <= max_length))
       return false;
   }
@@ -144,7 +151,7 @@ triangleSidedness (const Triangle& points, const Triangle& normals)
 {
   const Eigen::Vector3f winding = (points[1] - points[0]).cross (points[2] - points[0]);
   const Eigen::Vector3f surface = normals[0] + normals[1] + normals[2];
-  const float scale = winding.norm () * surface.norm ();
+  const float scale = winding.norm() * surface.norm();
   if (!(scale > 0.0f))
     return 0.0f;
   return winding.dot (surface) / scale;
@@ -153,7 +160,7 @@ triangleSidedness (const Triangle& points, const Triangle& normals)
 float
 triangleDistance (const Triangle& a, const Triangle& b)
 {
-  float distance = std::numeric_limits<float>::infinity ();
+  float distance = std::numeric_limits<float>::infinity();
   for (int k = 0; k < 3 && distance > 0.0f; ++k) {
     distance = std::min (distance, segmentTriangleDistance (a[k], a[(k + 1) % 3], b));
     distance = std::min (distance, segmentTriangleDistance (b[k], b[(k + 1) % 3], a));

@@ -26,11 +26,12 @@ detectApp ()
 
 /** Discover the two-copies scene into folder/model_0.json and return the scene path. */
 std::string
-discoverModel (const mid::test::TemporaryFolder& folder, const mid::test::TwoCopiesScene& scene)
+discoverModel (const mid::test::TemporaryFolder& folder,
+               const mid::test::TwoCopiesScene& scene)
 {
-  const std::string path = folder.file ("scene.pcd");
+  std::string path = folder.file ("scene.pcd");
   EXPECT_EQ (pcl::io::savePCDFileBinaryCompressed (path, *scene.cloud), 0);
-  const auto result = mid::test::runCommand (discoveryApp () + " " + path + " -models " +
+  const auto result = mid::test::runCommand (discoveryApp() + " " + path + " -models " +
                                              folder.file ("model_"));
   EXPECT_EQ (result.exit_code, 0) << result.output;
   return path;
@@ -41,40 +42,46 @@ discoverModel (const mid::test::TemporaryFolder& folder, const mid::test::TwoCop
 TEST (DetectApp, FindsTheInstancesOfADiscoveredModel)
 {
   const mid::test::TemporaryFolder folder;
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   const std::string scene_path = discoverModel (folder, scene);
-  const auto result = mid::test::runCommand (detectApp () + " " + folder.file ("model_0.json") + " " +
-                                             scene_path + " -json " + folder.file ("detected.json"));
+  const auto result =
+      mid::test::runCommand (detectApp() + " " + folder.file ("model_0.json") + " " +
+                             scene_path + " -json " + folder.file ("detected.json"));
   ASSERT_EQ (result.exit_code, 0) << result.output;
   std::ifstream json (folder.file ("detected.json"));
-  const std::string text ((std::istreambuf_iterator<char> (json)), std::istreambuf_iterator<char> ());
+  const std::string text ((std::istreambuf_iterator<char> (json)),
+                          std::istreambuf_iterator<char>());
   EXPECT_NE (text.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << text;
 }
 
 TEST (DetectApp, FindsASingleInstanceToo)
 {
   const mid::test::TemporaryFolder folder;
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   discoverModel (folder, scene);
   // The same frame with copy B blanked: one instance left.
   auto single = *scene.cloud;
-  for (int v = scene.rect_b.y; v < scene.rect_b.br ().y; ++v)
-    for (int u = scene.rect_b.x; u < scene.rect_b.br ().x; ++u)
+  for (int v = scene.rect_b.y; v < scene.rect_b.br().y; ++v)
+    for (int u = scene.rect_b.x; u < scene.rect_b.br().x; ++u)
       single.at (u, v).r = single.at (u, v).g = single.at (u, v).b = 90;
-  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder.file ("single.pcd"), single), 0);
-  const auto result = mid::test::runCommand (detectApp () + " " + folder.file ("model_0.json") + " " +
-                                             folder.file ("single.pcd"));
+  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder.file ("single.pcd"), single),
+             0);
+  const auto result =
+      mid::test::runCommand (detectApp() + " " + folder.file ("model_0.json") + " " +
+                             folder.file ("single.pcd"));
   ASSERT_EQ (result.exit_code, 0) << result.output;
-  EXPECT_NE (result.output.find ("object 0: 1 instances"), std::string::npos) << result.output;
+  EXPECT_NE (result.output.find ("object 0: 1 instances"), std::string::npos)
+      << result.output;
 }
 
 TEST (DetectApp, RefusesMissingTruncatedOrForeignModels)
 {
   const mid::test::TemporaryFolder folder;
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   const std::string scene_path = discoverModel (folder, scene);
   auto expect_refused = [&] (const std::string& model, const std::string& message) {
-    const auto result = mid::test::runCommand (detectApp () + " " + model + " " + scene_path);
+    const auto result =
+        mid::test::runCommand (detectApp() + " " + model + " " + scene_path);
     EXPECT_FALSE (result.crashed);
     EXPECT_NE (result.exit_code, 0);
     EXPECT_NE (result.output.find (message), std::string::npos) << result.output;
@@ -82,6 +89,7 @@ TEST (DetectApp, RefusesMissingTruncatedOrForeignModels)
   expect_refused (folder.file ("missing.json"), "cannot open");
   std::filesystem::resize_file (folder.file ("model_0.pcd"), 100);
   expect_refused (folder.file ("model_0.json"), "model_0.pcd");
-  std::ofstream (folder.file ("other.json")) << "{\"format\": \"mid-object-model\", \"version\": 7}";
+  std::ofstream (folder.file ("other.json"))
+      << R"({"format": "mid-object-model", "version": 7})";
   expect_refused (folder.file ("other.json"), "version");
 }

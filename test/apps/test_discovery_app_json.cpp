@@ -22,8 +22,8 @@ readFile (const fs::path& path)
 {
   std::ifstream file (path);
   std::stringstream text;
-  text << file.rdbuf ();
-  return text.str ();
+  text << file.rdbuf();
+  return text.str();
 }
 
 /** The numbers of every "bbox": [u_min, v_min, u_max, v_max] in the JSON. */
@@ -31,17 +31,23 @@ std::vector<std::vector<double>>
 boxes (const std::string& json)
 {
   std::vector<std::vector<double>> result;
-  const std::regex pattern ("\"bbox\": \\[([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+)\\]");
-  for (auto it = std::sregex_iterator (json.begin (), json.end (), pattern); it != std::sregex_iterator (); ++it)
-    result.push_back ({std::stod ((*it)[1]), std::stod ((*it)[2]), std::stod ((*it)[3]), std::stod ((*it)[4])});
+  const std::regex pattern (
+      R"("bbox": \[([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+), ([-0-9.e]+)\])");
+  for (auto it = std::sregex_iterator (json.begin(), json.end(), pattern);
+       it != std::sregex_iterator();
+       ++it)
+    result.push_back ({std::stod ((*it)[1]),
+                       std::stod ((*it)[2]),
+                       std::stod ((*it)[3]),
+                       std::stod ((*it)[4])});
   return result;
 }
 
 bool
 inside (const std::vector<double>& box, const cv::Rect& rect, double margin)
 {
-  return box[0] >= rect.x - margin && box[1] >= rect.y - margin && box[2] <= rect.br ().x + margin &&
-         box[3] <= rect.br ().y + margin;
+  return box[0] >= rect.x - margin && box[1] >= rect.y - margin &&
+         box[2] <= rect.br().x + margin && box[3] <= rect.br().y + margin;
 }
 
 } // namespace
@@ -49,22 +55,31 @@ inside (const std::vector<double>& box, const cv::Rect& rect, double margin)
 TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
 {
   const mid::test::TemporaryFolder folder;
-  const fs::path& dir = folder.path ();
-  const auto scene = mid::test::makeTwoCopiesScene ();
-  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string (), *scene.cloud), 0);
+  const fs::path& dir = folder.path();
+  const auto scene = mid::test::makeTwoCopiesScene();
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string(), *scene.cloud),
+      0);
   const auto result = mid::test::runCommand (std::string (MID_DISCOVERY_APP) + " " +
-                                             (dir / "scene.pcd").string () + " -json " +
-                                             (dir / "result.json").string ());
+                                             (dir / "scene.pcd").string() + " -json " +
+                                             (dir / "result.json").string());
   ASSERT_EQ (result.exit_code, 0) << result.output;
   const std::string json = readFile (dir / "result.json");
   EXPECT_NE (json.find ("\"format\": \"mid-discovery-result\""), std::string::npos);
   EXPECT_NE (json.find ("\"version\": 1"), std::string::npos);
   EXPECT_NE (json.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << json;
-  for (const char* stage : {"features", "matching", "triplets", "clustering", "modeling", "detection", "total"})
-    EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos) << stage;
+  for (const char* stage : {"features",
+                            "matching",
+                            "triplets",
+                            "clustering",
+                            "modeling",
+                            "detection",
+                            "total"})
+    EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
+        << stage;
   // One instance on each copy: its keypoints' box within the copy (plus SIFT's outline margin).
   const auto found = boxes (json);
-  ASSERT_EQ (found.size (), 2u);
+  ASSERT_EQ (found.size(), 2u);
   const bool first_is_a = inside (found[0], scene.rect_a, 12.0);
   EXPECT_TRUE (first_is_a || inside (found[0], scene.rect_b, 12.0));
   EXPECT_TRUE (inside (found[1], first_is_a ? scene.rect_b : scene.rect_a, 12.0));
@@ -73,15 +88,18 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
 TEST (DiscoveryAppJson, AMissingOutputFolderFailsBeforeTheWorkAndWritesNothing)
 {
   const mid::test::TemporaryFolder folder;
-  const fs::path& dir = folder.path ();
-  const auto scene = mid::test::makeTwoCopiesScene ();
-  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string (), *scene.cloud), 0);
-  const auto result = mid::test::runCommand (std::string (MID_DISCOVERY_APP) + " " +
-                                             (dir / "scene.pcd").string () + " -json " +
-                                             (dir / "no_such_folder" / "result.json").string ());
+  const fs::path& dir = folder.path();
+  const auto scene = mid::test::makeTwoCopiesScene();
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed ((dir / "scene.pcd").string(), *scene.cloud),
+      0);
+  const auto result = mid::test::runCommand (
+      std::string (MID_DISCOVERY_APP) + " " + (dir / "scene.pcd").string() + " -json " +
+      (dir / "no_such_folder" / "result.json").string());
   EXPECT_FALSE (result.crashed);
   EXPECT_NE (result.exit_code, 0);
-  EXPECT_NE (result.output.find ("missing or not writable"), std::string::npos) << result.output;
+  EXPECT_NE (result.output.find ("missing or not writable"), std::string::npos)
+      << result.output;
   EXPECT_EQ (result.output.find ("keypoints:"), std::string::npos); // no work was done
-  EXPECT_EQ (folder.entries (), 1u);
+  EXPECT_EQ (folder.entries(), 1u);
 }

@@ -21,16 +21,18 @@ protected:
   void
   SetUp () override
   {
-    const auto scene = mid::test::makeTwoCopiesScene ();
-    ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder_.file ("scene.pcd"), *scene.cloud), 0);
+    const auto scene = mid::test::makeTwoCopiesScene();
+    ASSERT_EQ (
+        pcl::io::savePCDFileBinaryCompressed (folder_.file ("scene.pcd"), *scene.cloud),
+        0);
   }
 
   /** Run the app on the scene with no display at all. */
   mid::test::RunResult
   run (const std::string& arguments) const
   {
-    return mid::test::runCommand ("env -u DISPLAY " + std::string (MID_DISCOVERY_APP) + " " +
-                                  folder_.file ("scene.pcd") + " " + arguments);
+    return mid::test::runCommand ("env -u DISPLAY " + std::string (MID_DISCOVERY_APP) +
+                                  " " + folder_.file ("scene.pcd") + " " + arguments);
   }
 
   void
@@ -40,10 +42,11 @@ protected:
     EXPECT_FALSE (result.crashed) << result.output;
     EXPECT_NE (result.exit_code, 0) << result.output;
     EXPECT_NE (result.output.find (message), std::string::npos)
-        << "expected '" << message << "' in:\n" << result.output;
-    EXPECT_EQ (std::count (result.output.begin (), result.output.end (), '\n'), 1)
+        << "expected '" << message << "' in:\n"
         << result.output;
-    EXPECT_EQ (folder_.entries (), 1u) << "only the scene may be in the folder";
+    EXPECT_EQ (std::count (result.output.begin(), result.output.end(), '\n'), 1)
+        << result.output;
+    EXPECT_EQ (folder_.entries(), 1u) << "only the scene may be in the folder";
   }
 
   mid::test::TemporaryFolder folder_;
@@ -57,9 +60,9 @@ TEST_F (DiscoveryAppPictures, WritesTheOverlayWithoutADisplay)
                            folder_.file ("result.json"));
   ASSERT_EQ (result.exit_code, 0) << result.output;
   const cv::Mat overlay = cv::imread (folder_.file ("overlay.png"), cv::IMREAD_COLOR);
-  EXPECT_EQ (overlay.size (), cv::Size (640, 480));
+  EXPECT_EQ (overlay.size(), cv::Size (640, 480));
   EXPECT_TRUE (std::filesystem::exists (folder_.file ("result.json")));
-  EXPECT_EQ (folder_.entries (), 3u); // nothing partial left
+  EXPECT_EQ (folder_.entries(), 3u); // nothing partial left
 }
 
 TEST_F (DiscoveryAppPictures, RefusesAScreenshotOrAWindowWithoutADisplay)
@@ -74,8 +77,12 @@ TEST_F (DiscoveryAppPictures, RefusesAScreenshotOrAWindowWithoutADisplay)
 TEST_F (DiscoveryAppPictures, RefusesUnusablePictureOptions)
 {
   expectRefused ("-overlay " + folder_.file ("overlay.jpg"), "must end in .png");
-  expectRefused ("-overlay " + folder_.file ("missing/overlay.png"), "missing or not writable");
-  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 640", "-size needs 2 numbers");
-  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 0 480", "Invalid parameter");
-  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -viewpoint 1 2", "-viewpoint needs 3");
+  expectRefused ("-overlay " + folder_.file ("missing/overlay.png"),
+                 "missing or not writable");
+  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 640",
+                 "-size needs 2 numbers");
+  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 0 480",
+                 "Invalid parameter");
+  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -viewpoint 1 2",
+                 "-viewpoint needs 3");
 }

@@ -10,15 +10,18 @@
 
 namespace {
 
-const char* kTruth = R"({"0": [{"cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1], "cam_t_m2c": [0, 0, 800], "obj_id": 1},
+const char* kTruth =
+    R"({"0": [{"cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1], "cam_t_m2c": [0, 0, 800], "obj_id": 1},
                                {"cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1], "cam_t_m2c": [200, 0, 800], "obj_id": 1}],
                          "1": [{"cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1], "cam_t_m2c": [0, 0, 800], "obj_id": 1},
                                {"cam_R_m2c": [1, 0, 0, 0, 1, 0, 0, 0, 1], "cam_t_m2c": [200, 0, 800], "obj_id": 1}]})";
-const char* kInfo = R"({"0": [{"bbox_visib": [0, 0, 100, 100]}, {"bbox_visib": [200, 0, 100, 100]}],
+const char* kInfo =
+    R"({"0": [{"bbox_visib": [0, 0, 100, 100]}, {"bbox_visib": [200, 0, 100, 100]}],
                         "1": [{"bbox_visib": [0, 0, 100, 100]}, {"bbox_visib": [200, 0, 100, 100]}]})";
 
 /** A result with one object whose instances are at the two annotated boxes. */
-const char* kPerfect = R"({"format": "mid-discovery-result", "version": 1, "timing_ms": {"features": 50, "total": 80},
+const char* kPerfect =
+    R"({"format": "mid-discovery-result", "version": 1, "timing_ms": {"features": 50, "total": 80},
   "objects": [{"instances": [
     {"pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[10, 10], [20, 20]]},
     {"pose": [[1, 0, 0, 0.2], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[210, 10], [220, 20]]}]}]})";
@@ -28,19 +31,23 @@ const char* kPerfect = R"({"format": "mid-discovery-result", "version": 1, "timi
 TEST (EvalApp, ScoresAPerfectAndAMissingResult)
 {
   const mid::test::TemporaryFolder folder;
-  const auto dataset = folder.path () / "dataset", results = folder.path () / "results";
+  const auto dataset = folder.path() / "dataset", results = folder.path() / "results";
   std::filesystem::create_directories (dataset / "000000");
   std::filesystem::create_directories (results / "000000");
   std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
   std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
   std::ofstream (dataset / "scenarios.json") << R"({"000000": "S_ez"})";
-  std::ofstream (results / "000000" / "000000.json") << kPerfect; // frame 1 has no result
-  const auto run = mid::test::runCommand (std::string (MID_EVAL_APP) + " " + dataset.string () + " " +
-                                          results.string () + " -report " + folder.file ("report.md"));
+  std::ofstream (results / "000000" / "000000.json")
+      << kPerfect; // frame 1 has no result
+  const auto run = mid::test::runCommand (std::string (MID_EVAL_APP) + " " +
+                                          dataset.string() + " " + results.string() +
+                                          " -report " + folder.file ("report.md"));
   ASSERT_EQ (run.exit_code, 0) << run.output;
   // Instances: 2 TP, 0 FP, 2 FN -> P 1, R 0.5; pairs (both frames hold only pairs): 1 TP, 1 FN.
-  EXPECT_NE (run.output.find ("| S_ez       |    2 | 1.000 | 0.500 | 0.667 |    2 | 1.000 | 0.500 | 0.667 |   0.00 |   0.00 |    80.0 |    50.0 |"),
-             std::string::npos)
+  EXPECT_NE (
+      run.output.find ("| S_ez       |    2 | 1.000 | 0.500 | 0.667 |    2 | 1.000 | "
+                       "0.500 | 0.667 |   0.00 |   0.00 |    80.0 |    50.0 |"),
+      std::string::npos)
       << run.output;
   EXPECT_NE (run.output.find ("1 frames had no result file"), std::string::npos);
   EXPECT_TRUE (std::filesystem::exists (folder.file ("report.md")));
@@ -49,13 +56,16 @@ TEST (EvalApp, ScoresAPerfectAndAMissingResult)
 TEST (EvalApp, RefusesUnusableFolders)
 {
   const mid::test::TemporaryFolder folder;
-  const auto run = mid::test::runCommand (std::string (MID_EVAL_APP) + " " + folder.file ("none") + " " +
-                                          folder.path ().string ());
+  const auto run =
+      mid::test::runCommand (std::string (MID_EVAL_APP) + " " + folder.file ("none") +
+                             " " + folder.path().string());
   EXPECT_FALSE (run.crashed);
   EXPECT_NE (run.exit_code, 0);
   EXPECT_NE (run.output.find ("is not a folder"), std::string::npos) << run.output;
-  const auto empty = mid::test::runCommand (std::string (MID_EVAL_APP) + " " + folder.path ().string () + " " +
-                                            folder.path ().string ());
+  const auto empty =
+      mid::test::runCommand (std::string (MID_EVAL_APP) + " " + folder.path().string() +
+                             " " + folder.path().string());
   EXPECT_NE (empty.exit_code, 0);
-  EXPECT_NE (empty.output.find ("no BOP scene folder"), std::string::npos) << empty.output;
+  EXPECT_NE (empty.output.find ("no BOP scene folder"), std::string::npos)
+      << empty.output;
 }

@@ -19,10 +19,10 @@ allocate (std::size_t size)
 {
   auto* block = static_cast<unsigned char*> (std::malloc (size + kHeader));
   if (block == nullptr)
-    throw std::bad_alloc ();
+    throw std::bad_alloc();
   *reinterpret_cast<std::size_t*> (block) = size;
   const std::size_t now = current.fetch_add (size) + size;
-  std::size_t seen = peak.load ();
+  std::size_t seen = peak.load();
   while (now > seen && !peak.compare_exchange_weak (seen, now)) {
   }
   return block + kHeader;
@@ -65,13 +65,13 @@ operator delete[] (void* pointer) noexcept
 }
 
 void
-operator delete (void* pointer, std::size_t) noexcept
+operator delete (void* pointer, std::size_t /*size*/) noexcept
 {
   release (pointer);
 }
 
 void
-operator delete[] (void* pointer, std::size_t) noexcept
+operator delete[] (void* pointer, std::size_t /*size*/) noexcept
 {
   release (pointer);
 }
@@ -82,19 +82,19 @@ namespace bench {
 std::size_t
 currentAllocatedBytes ()
 {
-  return current.load ();
+  return current.load();
 }
 
 void
 resetPeakAllocatedBytes ()
 {
-  peak.store (current.load ());
+  peak.store (current.load());
 }
 
 std::size_t
 peakAllocatedBytes ()
 {
-  return peak.load ();
+  return peak.load();
 }
 
 } // namespace bench

@@ -16,11 +16,11 @@ namespace test {
 Eigen::Isometry3d
 boxPose (double x, double y, double z, double roll, double tilt)
 {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
-  pose.linear () = (Eigen::AngleAxisd (tilt * M_PI / 180.0, Eigen::Vector3d::UnitX ()) *
-                    Eigen::AngleAxisd (roll * M_PI / 180.0, Eigen::Vector3d::UnitZ ()))
-                       .toRotationMatrix ();
-  pose.translation () = Eigen::Vector3d (x, y, z);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = (Eigen::AngleAxisd (tilt * M_PI / 180.0, Eigen::Vector3d::UnitX()) *
+                   Eigen::AngleAxisd (roll * M_PI / 180.0, Eigen::Vector3d::UnitZ()))
+                      .toRotationMatrix();
+  pose.translation() = Eigen::Vector3d (x, y, z);
   return pose;
 }
 
@@ -34,11 +34,13 @@ renderBoxes (const std::vector<BoxSpec>& boxes)
   for (const auto& box : boxes) {
     if (textures.count (box.texture) == 0) {
       cv::Mat image;
-      if (!mid::simulation::loadTexture (std::string (MID_TEST_DATA_DIR) + "/textures/" + box.texture, image))
+      if (!mid::simulation::loadTexture (
+              std::string (MID_TEST_DATA_DIR) + "/textures/" + box.texture, image))
         throw std::runtime_error ("cannot read texture " + box.texture);
       textures[box.texture] = image;
     }
-    auto shape = std::make_shared<mid::simulation::BoxShape> (box.size.x (), box.size.y (), box.size.z ());
+    auto shape = std::make_shared<mid::simulation::BoxShape> (
+        box.size.x(), box.size.y(), box.size.z());
     shape->setTexture (mid::simulation::makeUniformTexture (cv::Vec3b (200, 200, 200)));
     shape->setFaceTexture (mid::simulation::BoxShape::NEG_Z, textures[box.texture]);
     scene.addObject (shape, box.pose);
@@ -46,7 +48,7 @@ renderBoxes (const std::vector<BoxSpec>& boxes)
   mid::simulation::SceneRenderer renderer;
   if (!renderer.render (scene, result.frame))
     throw std::runtime_error ("rendering failed");
-  result.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>> ();
+  result.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>>();
   // A 0.1 mm depth step: a noise-free frame, as exact as a 16-bit PNG can hold it.
   if (!mid::simulation::frameToCloud (result.frame, 1e-4, *result.cloud))
     throw std::runtime_error ("no cloud");
@@ -54,12 +56,15 @@ renderBoxes (const std::vector<BoxSpec>& boxes)
 }
 
 int
-boxUnderKeypoints (const RenderedObjectsScene& scene, const std::vector<Eigen::Vector2f>& pixels)
+boxUnderKeypoints (const RenderedObjectsScene& scene,
+                   const std::vector<Eigen::Vector2f>& pixels)
 {
   std::map<int, int> votes;
   for (const auto& p : pixels) {
-    const int u = static_cast<int> (std::lround (p.x ())), v = static_cast<int> (std::lround (p.y ()));
-    if (u >= 0 && v >= 0 && u < scene.frame.instances.cols && v < scene.frame.instances.rows)
+    const int u = static_cast<int> (std::lround (p.x())),
+              v = static_cast<int> (std::lround (p.y()));
+    if (u >= 0 && v >= 0 && u < scene.frame.instances.cols &&
+        v < scene.frame.instances.rows)
       ++votes[scene.frame.instances.at<int> (v, u)];
   }
   int best = -1, count = 0;
@@ -68,7 +73,7 @@ boxUnderKeypoints (const RenderedObjectsScene& scene, const std::vector<Eigen::V
       best = box;
       count = n;
     }
-  return 2 * count > static_cast<int> (pixels.size ()) ? best : -1;
+  return 2 * count > static_cast<int> (pixels.size()) ? best : -1;
 }
 
 } // namespace test

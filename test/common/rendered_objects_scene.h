@@ -20,7 +20,7 @@ struct BoxSpec
   /** \brief Edge lengths (metres); the textured face is the one with outward normal -z. */
   Eigen::Vector3d size{0.16, 0.11, 0.04};
   /** \brief Model -> camera pose. */
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
 };
 
 /** \brief A rendered frame of boxes in front of an untextured background, exactly known. */
@@ -45,7 +45,8 @@ renderBoxes (const std::vector<BoxSpec>& boxes);
   * if most lie on the background.
   */
 int
-boxUnderKeypoints (const RenderedObjectsScene& scene, const std::vector<Eigen::Vector2f>& pixels);
+boxUnderKeypoints (const RenderedObjectsScene& scene,
+                   const std::vector<Eigen::Vector2f>& pixels);
 
 } // namespace test
 } // namespace mid

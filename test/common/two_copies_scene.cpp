@@ -26,8 +26,11 @@ randomTexture (unsigned seed)
     if (i % 2 == 0)
       cv::circle (texture, center, rng.uniform (3, 14), gray, cv::FILLED);
     else
-      cv::rectangle (texture, center, center + cv::Point (rng.uniform (3, 25), rng.uniform (3, 25)),
-                     gray, cv::FILLED);
+      cv::rectangle (texture,
+                     center,
+                     center + cv::Point (rng.uniform (3, 25), rng.uniform (3, 25)),
+                     gray,
+                     cv::FILLED);
   }
   cv::GaussianBlur (texture, texture, cv::Size (0, 0), 1.0);
   return texture;
@@ -40,14 +43,17 @@ backProject (float u, float v, float z)
 }
 
 void
-paint (pcl::PointCloud<pcl::PointXYZRGB>& cloud, const cv::Mat& gray, const cv::Rect& rect, float z)
+paint (pcl::PointCloud<pcl::PointXYZRGB>& cloud,
+       const cv::Mat& gray,
+       const cv::Rect& rect,
+       float z)
 {
   for (int v = 0; v < rect.height; ++v)
     for (int u = 0; u < rect.width; ++u) {
       auto& point = cloud.at (rect.x + u, rect.y + v);
       point.r = point.g = point.b = gray.at<uchar> (v, u);
-      point.getVector3fMap () = backProject (static_cast<float> (rect.x + u),
-                                             static_cast<float> (rect.y + v), z);
+      point.getVector3fMap() = backProject (
+          static_cast<float> (rect.x + u), static_cast<float> (rect.y + v), z);
     }
 }
 
@@ -59,8 +65,10 @@ makeTwoCopiesScene (unsigned seed)
   TwoCopiesScene scene;
   scene.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> (kWidth, kHeight);
   scene.cloud->is_dense = true;
-  paint (*scene.cloud, cv::Mat (kHeight, kWidth, CV_8UC1, cv::Scalar (90)),
-         cv::Rect (0, 0, kWidth, kHeight), kWallDepth);
+  paint (*scene.cloud,
+         cv::Mat (kHeight, kWidth, CV_8UC1, cv::Scalar (90)),
+         cv::Rect (0, 0, kWidth, kHeight),
+         kWallDepth);
 
   const cv::Mat texture = randomTexture (seed);
   cv::Mat turned;
@@ -72,13 +80,17 @@ makeTwoCopiesScene (unsigned seed)
 
   // Texture pixel (column a, row b) lands at A + (a, b) and, turned clockwise, at
   // B + (n - 1 - b, a): in the image a rotation by +90 degrees, in 3D one about the optical axis.
-  scene.a_to_b.linear () = Eigen::AngleAxisf (static_cast<float> (M_PI / 2), Eigen::Vector3f::UnitZ ())
-                               .toRotationMatrix ();
+  scene.a_to_b.linear() =
+      Eigen::AngleAxisf (static_cast<float> (M_PI / 2), Eigen::Vector3f::UnitZ())
+          .toRotationMatrix();
   const Eigen::Vector3f a0 = backProject (static_cast<float> (scene.rect_a.x),
-                                          static_cast<float> (scene.rect_a.y), kPatchDepth);
-  const Eigen::Vector3f b0 = backProject (static_cast<float> (scene.rect_b.x + kPatch - 1),
-                                          static_cast<float> (scene.rect_b.y), kPatchDepth);
-  scene.a_to_b.translation () = b0 - scene.a_to_b.linear () * a0;
+                                          static_cast<float> (scene.rect_a.y),
+                                          kPatchDepth);
+  const Eigen::Vector3f b0 =
+      backProject (static_cast<float> (scene.rect_b.x + kPatch - 1),
+                   static_cast<float> (scene.rect_b.y),
+                   kPatchDepth);
+  scene.a_to_b.translation() = b0 - scene.a_to_b.linear() * a0;
   return scene;
 }
 

@@ -21,15 +21,18 @@ main ()
       cloud.width != 4 || std::abs (cloud.at (0, 0).z - 1.0f) > 1e-6f)
     return 1;
   mid::PointPairFeature feature;
-  if (!mid::computePointPairFeature ({0, 0, 0}, {0, 0, 1}, {0.1f, 0, 0}, {0, 0, 1}, feature) ||
+  if (!mid::computePointPairFeature (
+          {0, 0, 0}, {0, 0, 1}, {0.1f, 0, 0}, {0, 0, 1}, feature) ||
       std::abs (feature.distance - 0.1f) > 1e-6f)
     return 1;
   std::string problem;
-  if (!mid::validateDiscoveryParameters (mid::DiscoveryParameters (), problem))
+  if (!mid::validateDiscoveryParameters (mid::DiscoveryParameters(), problem))
     return 1;
-  mid::MultiInstanceDiscovery<pcl::PointXYZRGB> discovery; // links the explicit instantiation
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGB>
+      discovery; // links the explicit instantiation
   mid::SelfMatcher matcher;
-  std::cout << "consumer ok: " << cloud.size () << " points, default max descriptor distance "
-            << matcher.getMaxDescriptorDistance () << "\n";
+  std::cout << "consumer ok: " << cloud.size()
+            << " points, default max descriptor distance "
+            << matcher.getMaxDescriptorDistance() << "\n";
   return 0;
 }

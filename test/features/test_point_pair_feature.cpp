@@ -10,7 +10,9 @@ namespace {
 constexpr float kPi = static_cast<float> (M_PI);
 
 mid::PointPairFeature
-feature (const Eigen::Vector3f& p1, const Eigen::Vector3f& n1, const Eigen::Vector3f& p2,
+feature (const Eigen::Vector3f& p1,
+         const Eigen::Vector3f& n1,
+         const Eigen::Vector3f& p2,
          const Eigen::Vector3f& n2)
 {
   mid::PointPairFeature f;
@@ -41,11 +43,12 @@ TEST (PointPairFeature, IsInvariantToRigidMotionAndNormalLength)
 {
   const Eigen::Vector3f p1 (0.1f, -0.2f, 0.9f), n1 (0.3f, 0.2f, -1.0f);
   const Eigen::Vector3f p2 (0.14f, -0.17f, 0.93f), n2 (-0.4f, 0.1f, -1.0f);
-  const Eigen::Isometry3f motion = Eigen::Translation3f (0.3f, -0.1f, 0.2f) *
-                                   Eigen::AngleAxisf (1.1f, Eigen::Vector3f (1, 2, 3).normalized ());
+  const Eigen::Isometry3f motion =
+      Eigen::Translation3f (0.3f, -0.1f, 0.2f) *
+      Eigen::AngleAxisf (1.1f, Eigen::Vector3f (1, 2, 3).normalized());
   const auto a = feature (p1, n1, p2, n2);
-  const auto b = feature (motion * p1, 2.0f * (motion.linear () * n1), motion * p2,
-                          motion.linear () * n2);
+  const auto b = feature (
+      motion * p1, 2.0f * (motion.linear() * n1), motion * p2, motion.linear() * n2);
   const auto d = mid::pointPairFeatureDifference (a, b);
   EXPECT_NEAR (d.distance, 0.0f, 1e-6f);
   EXPECT_NEAR (d.angle_n1_d, 0.0f, 1e-5f);
@@ -58,7 +61,7 @@ TEST (PointPairFeature, RefusesDegenerateInput)
   mid::PointPairFeature f;
   const Eigen::Vector3f p (1, 2, 3), n (0, 0, 1);
   EXPECT_FALSE (mid::computePointPairFeature (p, n, p, n, f));
-  EXPECT_FALSE (mid::computePointPairFeature (p, Eigen::Vector3f::Zero (), p + n, n, f));
+  EXPECT_FALSE (mid::computePointPairFeature (p, Eigen::Vector3f::Zero(), p + n, n, f));
   EXPECT_FALSE (mid::computePointPairFeature (p, n, Eigen::Vector3f (NAN, 0, 0), n, f));
 }
 
@@ -74,13 +77,14 @@ TEST (PointPairFeature, SimilarityAppliesEachThreshold)
   off.distance = base.distance - 0.0051f;
   EXPECT_FALSE (mid::arePointPairFeaturesSimilar (base, off, max_distance, max_angle));
 
-  for (float mid::PointPairFeature::*angle :
-       {&mid::PointPairFeature::angle_n1_d, &mid::PointPairFeature::angle_n2_d,
-        &mid::PointPairFeature::angle_n1_n2}) {
+  for (float mid::PointPairFeature::*angle : {&mid::PointPairFeature::angle_n1_d,
+                                              &mid::PointPairFeature::angle_n2_d,
+                                              &mid::PointPairFeature::angle_n1_n2}) {
     off = base;
     off.*angle += 0.99f * max_angle;
     EXPECT_TRUE (mid::arePointPairFeaturesSimilar (base, off, max_distance, max_angle));
     off.*angle = base.*angle - 1.01f * max_angle;
-    EXPECT_FALSE (mid::arePointPairFeaturesSimilar (base, off, max_distance, max_angle));
+    EXPECT_FALSE (
+        mid::arePointPairFeaturesSimilar (base, off, max_distance, max_angle));
   }
 }

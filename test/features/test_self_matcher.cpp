@@ -12,8 +12,9 @@ namespace {
 /** Keypoints far apart on a line and descriptors filled by the test. */
 struct Fixture
 {
-  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  mid::SIFTDescriptorCloud::Ptr descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
+  mid::SIFTDescriptorCloud::Ptr descriptors =
+      pcl::make_shared<mid::SIFTDescriptorCloud>();
   std::mt19937 rng{42};
 
   /** A random descriptor of norm about 512, like OpenCV's SIFT. */
@@ -39,7 +40,7 @@ struct Fixture
   add (const mid::SIFTDescriptor& d, float x = -1.0f)
   {
     pcl::PointNormal p;
-    p.x = x >= 0.0f ? x : 0.1f * static_cast<float> (keypoints->size ());
+    p.x = x >= 0.0f ? x : 0.1f * static_cast<float> (keypoints->size());
     p.y = p.z = 0.0f;
     p.normal_x = p.normal_y = 0.0f;
     p.normal_z = -1.0f;
@@ -48,7 +49,7 @@ struct Fixture
   }
 
   pcl::Correspondences
-  match (mid::SelfMatcher& matcher)
+  match (mid::SelfMatcher& matcher) const
   {
     matcher.setInputKeypoints (keypoints);
     matcher.setInputDescriptors (descriptors);
@@ -72,34 +73,34 @@ matchOf (const pcl::Correspondences& matches, int query)
 TEST (SelfMatcher, MatchesEachKeypointToItsNearestOtherWithinTheThreshold)
 {
   Fixture f;
-  const auto a = f.randomDescriptor (), b = f.randomDescriptor ();
+  const auto a = f.randomDescriptor(), b = f.randomDescriptor();
   f.add (a);                      // 0
   f.add (b);                      // 1
-  f.add (f.randomDescriptor ());  // 2: unique
+  f.add (f.randomDescriptor());   // 2: unique
   f.add (Fixture::moved (a, 50)); // 3: like 0
   f.add (Fixture::moved (b, 90)); // 4: like 1
   mid::SelfMatcher matcher;
   matcher.setMaxDescriptorDistance (100.0f);
   const auto matches = f.match (matcher);
-  ASSERT_EQ (matches.size (), 4u);
+  ASSERT_EQ (matches.size(), 4u);
   EXPECT_EQ (matchOf (matches, 0), 3);
   EXPECT_EQ (matchOf (matches, 3), 0);
   EXPECT_EQ (matchOf (matches, 1), 4);
   EXPECT_EQ (matchOf (matches, 4), 1);
   EXPECT_EQ (matchOf (matches, 2), -1);
   EXPECT_FLOAT_EQ (matches[0].distance, 50.0f);
-  for (std::size_t i = 1; i < matches.size (); ++i)
+  for (std::size_t i = 1; i < matches.size(); ++i)
     EXPECT_LT (matches[i - 1].index_query, matches[i].index_query);
 
   matcher.setMaxDescriptorDistance (80.0f);
-  EXPECT_EQ (f.match (matcher).size (), 2u);
+  EXPECT_EQ (f.match (matcher).size(), 2u);
 }
 
 TEST (SelfMatcher, SkipsCandidatesInTheQuerysOwnNeighbourhood)
 {
   Fixture f;
-  const auto a = f.randomDescriptor ();
-  f.add (a, 0.0f);                      // 0
+  const auto a = f.randomDescriptor();
+  f.add (a, 0.0f);                       // 0
   f.add (Fixture::moved (a, 1), 0.005f); // 1: same spot, other orientation
   f.add (Fixture::moved (a, 40), 0.5f);  // 2: the other instance
   mid::SelfMatcher matcher;
@@ -115,12 +116,12 @@ TEST (SelfMatcher, SkipsCandidatesInTheQuerysOwnNeighbourhood)
 TEST (SelfMatcher, RatioTestAndMutualCheck)
 {
   Fixture f;
-  const auto a = f.randomDescriptor ();
-  f.add (a);                      // 0
-  f.add (Fixture::moved (a, 30)); // 1: best of 0
+  const auto a = f.randomDescriptor();
+  f.add (a);                         // 0
+  f.add (Fixture::moved (a, 30));    // 1: best of 0
   f.add (Fixture::moved (a, 35, 1)); // 2: a close second
   mid::SelfMatcher matcher;
-  EXPECT_EQ (f.match (matcher).size (), 3u);
+  EXPECT_EQ (f.match (matcher).size(), 3u);
   matcher.setMaxDistanceRatio (0.8f);
   EXPECT_EQ (matchOf (f.match (matcher), 0), -1);
 
@@ -136,19 +137,19 @@ TEST (SelfMatcher, RatioTestAndMutualCheck)
 TEST (SelfMatcher, RefusesBadInputWithClearedOutput)
 {
   Fixture f;
-  f.add (f.randomDescriptor ());
-  f.add (f.randomDescriptor ());
+  f.add (f.randomDescriptor());
+  f.add (f.randomDescriptor());
   mid::SelfMatcher matcher;
   pcl::Correspondences matches (3);
   EXPECT_FALSE (matcher.match (matches));
-  EXPECT_TRUE (matches.empty ());
+  EXPECT_TRUE (matches.empty());
 
   matcher.setInputKeypoints (f.keypoints);
   matcher.setInputDescriptors (f.descriptors);
-  f.descriptors->push_back (f.randomDescriptor ());
+  f.descriptors->push_back (f.randomDescriptor());
   matches.resize (3);
   EXPECT_FALSE (matcher.match (matches));
-  EXPECT_TRUE (matches.empty ());
+  EXPECT_TRUE (matches.empty());
   f.descriptors->resize (2);
 
   for (const float bad : {0.0f, -1.0f, NAN}) {
@@ -167,11 +168,11 @@ TEST (SelfMatcher, RefusesBadInputWithClearedOutput)
 
 TEST (SelfMatcher, MatchesBetweenTwoCopiesAgreeWithTheKnownRigidMotion)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   mid::SIFTKeypointExtractor<pcl::PointXYZRGB> extractor;
   extractor.setInputCloud (scene.cloud);
-  auto keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  auto keypoints = pcl::make_shared<mid::KeypointCloud>();
+  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud>();
   ASSERT_TRUE (extractor.compute (*keypoints, *descriptors));
 
   mid::SelfMatcher matcher;
@@ -180,10 +181,11 @@ TEST (SelfMatcher, MatchesBetweenTwoCopiesAgreeWithTheKnownRigidMotion)
   pcl::Correspondences matches;
   ASSERT_TRUE (matcher.match (matches));
 
-  const auto& image = extractor.getImageKeypoints ();
+  const auto& image = extractor.getImageKeypoints();
   auto in_a = [&] (pcl::index_t i) {
-    return scene.rect_a.contains (cv::Point (static_cast<int> (std::lround (image[static_cast<std::size_t> (i)].u)),
-                                             static_cast<int> (std::lround (image[static_cast<std::size_t> (i)].v))));
+    return scene.rect_a.contains (cv::Point (
+        static_cast<int> (std::lround (image[static_cast<std::size_t> (i)].u)),
+        static_cast<int> (std::lround (image[static_cast<std::size_t> (i)].v))));
   };
   std::size_t across = 0, consistent = 0;
   for (const auto& m : matches) {
@@ -191,14 +193,19 @@ TEST (SelfMatcher, MatchesBetweenTwoCopiesAgreeWithTheKnownRigidMotion)
     if (query_in_a == match_in_a)
       continue;
     ++across;
-    const Eigen::Vector3f p = (*keypoints)[static_cast<std::size_t> (m.index_query)].getVector3fMap ();
-    const Eigen::Vector3f q = (*keypoints)[static_cast<std::size_t> (m.index_match)].getVector3fMap ();
-    const Eigen::Vector3f predicted = query_in_a ? scene.a_to_b * p : scene.a_to_b.inverse () * p;
+    const Eigen::Vector3f p =
+        (*keypoints)[static_cast<std::size_t> (m.index_query)].getVector3fMap();
+    const Eigen::Vector3f q =
+        (*keypoints)[static_cast<std::size_t> (m.index_match)].getVector3fMap();
+    const Eigen::Vector3f predicted =
+        query_in_a ? scene.a_to_b * p : scene.a_to_b.inverse() * p;
     // One pixel at 0.8 m is 1.5 mm; keypoints are rounded to pixels on both sides.
-    if ((predicted - q).norm () < 0.004f)
+    if ((predicted - q).norm() < 0.004f)
       ++consistent;
   }
-  EXPECT_GT (across, 0.6 * static_cast<double> (keypoints->size ()));
-  EXPECT_GE (consistent, static_cast<std::size_t> (0.95 * static_cast<double> (across)));
-  EXPECT_GE (across, static_cast<std::size_t> (0.9 * static_cast<double> (matches.size ())));
+  EXPECT_GT (across, 0.6 * static_cast<double> (keypoints->size()));
+  EXPECT_GE (consistent,
+             static_cast<std::size_t> (0.95 * static_cast<double> (across)));
+  EXPECT_GE (across,
+             static_cast<std::size_t> (0.9 * static_cast<double> (matches.size())));
 }

@@ -13,7 +13,9 @@ using Extractor = mid::SIFTKeypointExtractor<pcl::PointXYZRGB>;
 bool
 inside (const cv::Rect& rect, const mid::ImageKeypoint& kp, int margin = 0)
 {
-  const cv::Rect grown (rect.x - margin, rect.y - margin, rect.width + 2 * margin,
+  const cv::Rect grown (rect.x - margin,
+                        rect.y - margin,
+                        rect.width + 2 * margin,
                         rect.height + 2 * margin);
   return grown.contains (cv::Point (static_cast<int> (std::lround (kp.u)),
                                     static_cast<int> (std::lround (kp.v))));
@@ -26,21 +28,22 @@ constexpr int kOutline = 3;
 
 TEST (SIFTKeypointExtractor, LiftsKeypointsOntoTheSurfaceWithCameraFacingNormals)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   Extractor extractor;
   extractor.setInputCloud (scene.cloud);
   mid::KeypointCloud keypoints;
   mid::SIFTDescriptorCloud descriptors;
   ASSERT_TRUE (extractor.compute (keypoints, descriptors));
-  ASSERT_GT (keypoints.size (), 60u);
-  ASSERT_EQ (descriptors.size (), keypoints.size ());
-  ASSERT_EQ (extractor.getImageKeypoints ().size (), keypoints.size ());
+  ASSERT_GT (keypoints.size(), 60u);
+  ASSERT_EQ (descriptors.size(), keypoints.size());
+  ASSERT_EQ (extractor.getImageKeypoints().size(), keypoints.size());
 
   std::size_t in_a = 0, in_b = 0;
-  for (std::size_t i = 0; i < keypoints.size (); ++i) {
-    const auto& image_kp = extractor.getImageKeypoints ()[i];
-    EXPECT_EQ (keypoints[i].getVector3fMap (),
-               (*scene.cloud)[static_cast<std::size_t> (image_kp.pixel_index)].getVector3fMap ());
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    const auto& image_kp = extractor.getImageKeypoints()[i];
+    EXPECT_EQ (keypoints[i].getVector3fMap(),
+               (*scene.cloud)[static_cast<std::size_t> (image_kp.pixel_index)]
+                   .getVector3fMap());
     // Every point here lies on a fronto-parallel plane: the normal faces the camera exactly.
     EXPECT_NEAR (keypoints[i].normal_z, -1.0f, 1e-4f);
     EXPECT_NEAR (keypoints[i].curvature, 0.0f, 1e-4f);
@@ -54,24 +57,25 @@ TEST (SIFTKeypointExtractor, LiftsKeypointsOntoTheSurfaceWithCameraFacingNormals
     EXPECT_NEAR (std::sqrt (norm), 512.0f, 30.0f);
   }
   // The wall is untextured; the two copies hold (nearly) the same keypoints.
-  EXPECT_EQ (in_a + in_b, keypoints.size ());
-  EXPECT_NEAR (static_cast<double> (in_a), static_cast<double> (in_b),
+  EXPECT_EQ (in_a + in_b, keypoints.size());
+  EXPECT_NEAR (static_cast<double> (in_a),
+               static_cast<double> (in_b),
                0.15 * static_cast<double> (in_a));
 }
 
 TEST (SIFTKeypointExtractor, KeepsOnlyKeypointsWithValidDepth)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
-  for (int v = scene.rect_b.y; v < scene.rect_b.br ().y; ++v)
-    for (int u = scene.rect_b.x; u < scene.rect_b.br ().x; ++u)
-      scene.cloud->at (u, v).z = std::numeric_limits<float>::quiet_NaN ();
+  const auto scene = mid::test::makeTwoCopiesScene();
+  for (int v = scene.rect_b.y; v < scene.rect_b.br().y; ++v)
+    for (int u = scene.rect_b.x; u < scene.rect_b.br().x; ++u)
+      scene.cloud->at (u, v).z = std::numeric_limits<float>::quiet_NaN();
   Extractor extractor;
   extractor.setInputCloud (scene.cloud);
   mid::KeypointCloud keypoints;
   mid::SIFTDescriptorCloud descriptors;
   ASSERT_TRUE (extractor.compute (keypoints, descriptors));
   std::size_t in_a = 0;
-  for (const auto& kp : extractor.getImageKeypoints ()) {
+  for (const auto& kp : extractor.getImageKeypoints()) {
     EXPECT_FALSE (inside (scene.rect_b, kp)) << kp.u << ", " << kp.v;
     in_a += inside (scene.rect_a, kp, kOutline) ? 1 : 0;
   }
@@ -80,10 +84,10 @@ TEST (SIFTKeypointExtractor, KeepsOnlyKeypointsWithValidDepth)
 
 TEST (SIFTKeypointExtractor, HonoursIndicesAndTheKeypointCap)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
-  auto indices = pcl::make_shared<pcl::Indices> ();
-  for (int v = scene.rect_a.y; v < scene.rect_a.br ().y; ++v)
-    for (int u = scene.rect_a.x; u < scene.rect_a.br ().x; ++u)
+  const auto scene = mid::test::makeTwoCopiesScene();
+  auto indices = pcl::make_shared<pcl::Indices>();
+  for (int v = scene.rect_a.y; v < scene.rect_a.br().y; ++v)
+    for (int u = scene.rect_a.x; u < scene.rect_a.br().x; ++u)
       indices->push_back (v * static_cast<int> (scene.cloud->width) + u);
   Extractor extractor;
   extractor.setInputCloud (scene.cloud);
@@ -91,31 +95,32 @@ TEST (SIFTKeypointExtractor, HonoursIndicesAndTheKeypointCap)
   mid::KeypointCloud keypoints;
   mid::SIFTDescriptorCloud descriptors;
   ASSERT_TRUE (extractor.compute (keypoints, descriptors));
-  ASSERT_GT (keypoints.size (), 30u);
-  for (const auto& kp : extractor.getImageKeypoints ())
+  ASSERT_GT (keypoints.size(), 30u);
+  for (const auto& kp : extractor.getImageKeypoints())
     EXPECT_TRUE (inside (scene.rect_a, kp));
 
   extractor.setMaxKeypoints (10);
   ASSERT_TRUE (extractor.compute (keypoints, descriptors));
-  ASSERT_EQ (keypoints.size (), 10u);
+  ASSERT_EQ (keypoints.size(), 10u);
   for (std::size_t i = 1; i < 10; ++i)
-    EXPECT_GE (extractor.getImageKeypoints ()[i - 1].response,
-               extractor.getImageKeypoints ()[i].response);
+    EXPECT_GE (extractor.getImageKeypoints()[i - 1].response,
+               extractor.getImageKeypoints()[i].response);
 }
 
 TEST (SIFTKeypointExtractor, IsDeterministic)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   Extractor extractor;
   extractor.setInputCloud (scene.cloud);
   mid::KeypointCloud first, second;
   mid::SIFTDescriptorCloud first_descriptors, second_descriptors;
   ASSERT_TRUE (extractor.compute (first, first_descriptors));
   ASSERT_TRUE (extractor.compute (second, second_descriptors));
-  ASSERT_EQ (first.size (), second.size ());
-  for (std::size_t i = 0; i < first.size (); ++i) {
-    EXPECT_EQ (first[i].getVector3fMap (), second[i].getVector3fMap ());
-    EXPECT_TRUE (std::equal (first_descriptors[i].histogram, first_descriptors[i].histogram + 128,
+  ASSERT_EQ (first.size(), second.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ (first[i].getVector3fMap(), second[i].getVector3fMap());
+    EXPECT_TRUE (std::equal (first_descriptors[i].histogram,
+                             first_descriptors[i].histogram + 128,
                              second_descriptors[i].histogram));
   }
 }
@@ -126,18 +131,18 @@ TEST (SIFTKeypointExtractor, RefusesBadInputWithClearedOutputs)
   mid::KeypointCloud keypoints (3, 1);
   mid::SIFTDescriptorCloud descriptors (3, 1);
   EXPECT_FALSE (extractor.compute (keypoints, descriptors));
-  EXPECT_TRUE (keypoints.empty ());
-  EXPECT_TRUE (descriptors.empty ());
+  EXPECT_TRUE (keypoints.empty());
+  EXPECT_TRUE (descriptors.empty());
 
   auto flat = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> (100, 1);
   extractor.setInputCloud (flat);
   EXPECT_FALSE (extractor.compute (keypoints, descriptors));
 
-  extractor.setInputCloud (mid::test::makeTwoCopiesScene ().cloud);
+  extractor.setInputCloud (mid::test::makeTwoCopiesScene().cloud);
   extractor.setNormalRadius (0.0f);
   EXPECT_FALSE (extractor.compute (keypoints, descriptors));
   extractor.setNormalRadius (0.015f);
   extractor.setMaxKeypoints (-1);
   EXPECT_FALSE (extractor.compute (keypoints, descriptors));
-  EXPECT_TRUE (keypoints.empty ());
+  EXPECT_TRUE (keypoints.empty());
 }

@@ -2,13 +2,12 @@
 
 #include <mid/io/organized_cloud_io.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <unistd.h>
 
 namespace mid {
 namespace fuzz {
@@ -20,9 +19,9 @@ temporaryPCDPath ()
 {
   namespace fs = std::filesystem;
   std::error_code error;
-  const fs::path dir =
-      fs::is_directory ("/dev/shm", error) ? fs::path ("/dev/shm") : fs::temp_directory_path ();
-  return (dir / ("mid_fuzz_" + std::to_string (::getpid ()) + ".pcd")).string ();
+  const fs::path dir = fs::is_directory ("/dev/shm", error) ? fs::path ("/dev/shm")
+                                                            : fs::temp_directory_path();
+  return (dir / ("mid_fuzz_" + std::to_string (::getpid()) + ".pcd")).string();
 }
 
 } // namespace
@@ -30,13 +29,14 @@ temporaryPCDPath ()
 bool
 loadPCDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
 {
-  static const std::string path = temporaryPCDPath ();
+  static const std::string path = temporaryPCDPath();
   {
     std::ofstream file (path, std::ios::binary | std::ios::trunc);
-    file.write (reinterpret_cast<const char*> (data), static_cast<std::streamsize> (size));
+    file.write (reinterpret_cast<const char*> (data),
+                static_cast<std::streamsize> (size));
   }
   const bool loaded = io::loadOrganizedPCD (path, cloud);
-  std::remove (path.c_str ());
+  std::remove (path.c_str());
   return loaded;
 }
 
@@ -45,7 +45,8 @@ loadRGBDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
 {
   std::size_t color_size = 0;
   if (size >= 4)
-    color_size = static_cast<std::size_t> (data[0]) | static_cast<std::size_t> (data[1]) << 8U |
+    color_size = static_cast<std::size_t> (data[0]) |
+                 static_cast<std::size_t> (data[1]) << 8U |
                  static_cast<std::size_t> (data[2]) << 16U |
                  static_cast<std::size_t> (data[3]) << 24U;
   const std::size_t body = size >= 4 ? size - 4 : 0;
@@ -58,12 +59,14 @@ loadRGBDBytes (const std::uint8_t* data, std::size_t size, Cloud& cloud)
 Bytes
 packRGBD (const Bytes& color, const Bytes& depth)
 {
-  const auto n = static_cast<std::uint32_t> (color.size ());
-  Bytes packed{static_cast<std::uint8_t> (n & 0xFFU), static_cast<std::uint8_t> ((n >> 8U) & 0xFFU),
-               static_cast<std::uint8_t> ((n >> 16U) & 0xFFU),
-               static_cast<std::uint8_t> ((n >> 24U) & 0xFFU)};
-  packed.insert (packed.end (), color.begin (), color.end ());
-  packed.insert (packed.end (), depth.begin (), depth.end ());
+  const auto n = static_cast<std::uint32_t> (color.size());
+  Bytes packed (4 + color.size() + depth.size());
+  for (std::size_t i = 0; i < 4; ++i)
+    packed[i] = static_cast<std::uint8_t> ((n >> (8U * i)) & 0xFFU);
+  std::copy (color.begin(), color.end(), packed.begin() + 4);
+  std::copy (depth.begin(),
+             depth.end(),
+             packed.begin() + 4 + static_cast<std::ptrdiff_t> (color.size()));
   return packed;
 }
 
@@ -71,16 +74,16 @@ Bytes
 readFile (const std::string& path)
 {
   std::ifstream file (path, std::ios::binary);
-  return {std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char> ()};
+  return {std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char>()};
 }
 
 bool
 keepsTheContract (bool loaded, const Cloud& cloud)
 {
   if (!loaded)
-    return cloud.empty () && cloud.width == 0 && cloud.height == 0;
+    return cloud.empty() && cloud.width == 0 && cloud.height == 0;
   return cloud.height >= 2 &&
-         static_cast<std::size_t> (cloud.width) * cloud.height == cloud.size ();
+         static_cast<std::size_t> (cloud.width) * cloud.height == cloud.size();
 }
 
 } // namespace fuzz

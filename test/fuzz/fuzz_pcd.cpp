@@ -20,6 +20,6 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   mid::fuzz::Cloud cloud;
   const bool loaded = mid::fuzz::loadPCDBytes (data, size, cloud);
   if (!mid::fuzz::keepsTheContract (loaded, cloud))
-    std::abort ();
+    std::abort();
   return 0;
 }

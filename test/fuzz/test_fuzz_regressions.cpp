@@ -18,9 +18,9 @@ inputs (const std::string& folder)
 {
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator (fs::path (MID_FUZZ_DIR) / folder))
-    if (entry.is_regular_file () && entry.path ().extension () != ".md")
-      files.push_back (entry.path ());
-  std::sort (files.begin (), files.end ());
+    if (entry.is_regular_file() && entry.path().extension() != ".md")
+      files.push_back (entry.path());
+  std::sort (files.begin(), files.end());
   return files;
 }
 
@@ -29,8 +29,8 @@ using Loader = bool (*) (const std::uint8_t*, std::size_t, mid::fuzz::Cloud&);
 bool
 load (Loader loader, const fs::path& path, mid::fuzz::Cloud& cloud)
 {
-  const mid::fuzz::Bytes bytes = mid::fuzz::readFile (path.string ());
-  return loader (bytes.data (), bytes.size (), cloud);
+  const mid::fuzz::Bytes bytes = mid::fuzz::readFile (path.string());
+  return loader (bytes.data(), bytes.size(), cloud);
 }
 
 } // namespace
@@ -38,7 +38,7 @@ load (Loader loader, const fs::path& path, mid::fuzz::Cloud& cloud)
 TEST (FuzzSeedCorpus, EveryPcdSeedIsAValidFrame)
 {
   const auto files = inputs ("corpus/pcd");
-  ASSERT_FALSE (files.empty ());
+  ASSERT_FALSE (files.empty());
   for (const auto& path : files) {
     mid::fuzz::Cloud cloud;
     EXPECT_TRUE (load (&mid::fuzz::loadPCDBytes, path, cloud)) << path;
@@ -50,7 +50,7 @@ TEST (FuzzSeedCorpus, EveryPcdSeedIsAValidFrame)
 TEST (FuzzSeedCorpus, EveryRgbdSeedIsAValidFrame)
 {
   const auto files = inputs ("corpus/rgbd");
-  ASSERT_FALSE (files.empty ());
+  ASSERT_FALSE (files.empty());
   for (const auto& path : files) {
     mid::fuzz::Cloud cloud;
     EXPECT_TRUE (load (&mid::fuzz::loadRGBDBytes, path, cloud)) << path;

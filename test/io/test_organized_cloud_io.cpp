@@ -1,3 +1,5 @@
+#include "temporary_folder.h"
+
 #include <mid/io/organized_cloud_io.h>
 
 #include <gtest/gtest.h>
@@ -8,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <vector>
 
 namespace {
 
@@ -16,26 +19,28 @@ using Cloud = pcl::PointCloud<pcl::PointXYZRGB>;
 
 const mid::io::CameraIntrinsics kIntrinsics{500.0, 510.0, 3.5, 2.5, 0.001};
 
-/** A fresh folder per test, removed afterwards. */
+/** A fresh folder per test (and process), removed afterwards. */
 class OrganizedCloudIO : public ::testing::Test
 {
 protected:
-  void
-  SetUp () override
-  {
-    const auto* info = ::testing::UnitTest::GetInstance ()->current_test_info ();
-    dir_ = fs::temp_directory_path () / ("mid_test_io_" + std::string (info->name ()));
-    fs::remove_all (dir_);
-    fs::create_directories (dir_);
-  }
-  void
-  TearDown () override { fs::remove_all (dir_); }
-
   std::string
-  path (const std::string& name) const { return (dir_ / name).string (); }
+  path (const std::string& name) const
+  {
+    return folder_.file (name);
+  }
 
-  fs::path dir_;
+  mid::test::TemporaryFolder folder_;
 };
+
+using Bytes = std::vector<std::uint8_t>;
+
+Bytes
+encode (const char* extension, const cv::Mat& image)
+{
+  std::vector<uchar> bytes;
+  EXPECT_TRUE (cv::imencode (extension, image, bytes));
+  return {bytes.begin(), bytes.end()};
+}
 
 /** An 8 x 6 frame: depth (mm) grows with the pixel index, some pixels missing. */
 void
@@ -45,8 +50,10 @@ makeFrame (cv::Mat& color, cv::Mat& depth)
   depth.create (6, 8, CV_16UC1);
   for (int v = 0; v < 6; ++v)
     for (int u = 0; u < 8; ++u) {
-      color.at<cv::Vec3b> (v, u) = cv::Vec3b (static_cast<uchar> (u * 30), static_cast<uchar> (v * 40), 7);
-      depth.at<std::uint16_t> (v, u) = (u + v) % 5 == 0 ? 0 : static_cast<std::uint16_t> (700 + 10 * (v * 8 + u));
+      color.at<cv::Vec3b> (v, u) =
+          cv::Vec3b (static_cast<uchar> (u * 30), static_cast<uchar> (v * 40), 7);
+      depth.at<std::uint16_t> (v, u) =
+          (u + v) % 5 == 0 ? 0 : static_cast<std::uint16_t> (700 + 10 * (v * 8 + u));
     }
 }
 
@@ -64,7 +71,7 @@ makeOrganizedCloud ()
 void
 expectCleared (const Cloud& cloud)
 {
-  EXPECT_TRUE (cloud.empty ());
+  EXPECT_TRUE (cloud.empty());
   EXPECT_EQ (cloud.width, 0u);
   EXPECT_EQ (cloud.height, 0u);
 }
@@ -104,20 +111,21 @@ TEST_F (OrganizedCloudIO, LoadsPngPairsLikeTheInMemoryPath)
   ASSERT_TRUE (cv::imwrite (path ("rgb.png"), color));
   ASSERT_TRUE (cv::imwrite (path ("depth.png"), depth));
   Cloud from_files;
-  ASSERT_TRUE (mid::io::loadRGBD (path ("rgb.png"), path ("depth.png"), kIntrinsics, from_files));
-  const Cloud expected = makeOrganizedCloud ();
-  ASSERT_EQ (from_files.size (), expected.size ());
-  for (std::size_t i = 0; i < expected.size (); ++i) {
+  ASSERT_TRUE (mid::io::loadRGBD (
+      path ("rgb.png"), path ("depth.png"), kIntrinsics, from_files));
+  const Cloud expected = makeOrganizedCloud();
+  ASSERT_EQ (from_files.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ (from_files[i].rgba, expected[i].rgba);
     if (std::isfinite (expected[i].z)) {
-      EXPECT_EQ (from_files[i].getVector3fMap (), expected[i].getVector3fMap ());
+      EXPECT_EQ (from_files[i].getVector3fMap(), expected[i].getVector3fMap());
     }
   }
 }
 
 TEST_F (OrganizedCloudIO, RoundTripsAnOrganizedPcdInBothPointTypes)
 {
-  const Cloud cloud = makeOrganizedCloud ();
+  const Cloud cloud = makeOrganizedCloud();
   ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (path ("scene.pcd"), cloud), 0);
   Cloud loaded;
   ASSERT_TRUE (mid::io::loadOrganizedPCD (path ("scene.pcd"), loaded));
@@ -125,18 +133,18 @@ TEST_F (OrganizedCloudIO, RoundTripsAnOrganizedPcdInBothPointTypes)
   EXPECT_EQ (loaded.height, cloud.height);
   pcl::PointCloud<pcl::PointXYZRGBA> rgba;
   ASSERT_TRUE (mid::io::loadOrganizedPCD (path ("scene.pcd"), rgba));
-  for (std::size_t i = 0; i < cloud.size (); ++i) {
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
     EXPECT_EQ (loaded[i].rgba, cloud[i].rgba);
     EXPECT_EQ (rgba[i].r, cloud[i].r);
     if (std::isfinite (cloud[i].z)) {
-      EXPECT_EQ (loaded[i].getVector3fMap (), cloud[i].getVector3fMap ());
+      EXPECT_EQ (loaded[i].getVector3fMap(), cloud[i].getVector3fMap());
     }
   }
 }
 
 TEST_F (OrganizedCloudIO, RefusesAMissingFile)
 {
-  Cloud cloud = makeOrganizedCloud ();
+  Cloud cloud = makeOrganizedCloud();
   EXPECT_FALSE (mid::io::loadOrganizedPCD (path ("missing.pcd"), cloud));
   expectCleared (cloud);
 }
@@ -144,9 +152,9 @@ TEST_F (OrganizedCloudIO, RefusesAMissingFile)
 TEST_F (OrganizedCloudIO, RefusesGarbageAndEmptyFiles)
 {
   std::ofstream (path ("garbage.pcd")) << "this is not a point cloud\n\x01\x02";
-  std::ofstream (path ("empty.pcd")).flush ();
+  std::ofstream (path ("empty.pcd")).flush();
   for (const char* name : {"garbage.pcd", "empty.pcd"}) {
-    Cloud cloud = makeOrganizedCloud ();
+    Cloud cloud = makeOrganizedCloud();
     EXPECT_FALSE (mid::io::loadOrganizedPCD (path (name), cloud)) << name;
     expectCleared (cloud);
   }
@@ -154,7 +162,7 @@ TEST_F (OrganizedCloudIO, RefusesGarbageAndEmptyFiles)
 
 TEST_F (OrganizedCloudIO, RefusesATruncatedBinaryPcd)
 {
-  const Cloud cloud = makeOrganizedCloud ();
+  const Cloud cloud = makeOrganizedCloud();
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("full.pcd"), cloud), 0);
   const auto size = fs::file_size (path ("full.pcd"));
   fs::copy_file (path ("full.pcd"), path ("cut.pcd"));
@@ -166,8 +174,8 @@ TEST_F (OrganizedCloudIO, RefusesATruncatedBinaryPcd)
 
 TEST_F (OrganizedCloudIO, RefusesAnUnorganizedCloud)
 {
-  Cloud cloud = makeOrganizedCloud ();
-  cloud.width = static_cast<std::uint32_t> (cloud.size ());
+  Cloud cloud = makeOrganizedCloud();
+  cloud.width = static_cast<std::uint32_t> (cloud.size());
   cloud.height = 1;
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("flat.pcd"), cloud), 0);
   Cloud loaded;
@@ -178,7 +186,7 @@ TEST_F (OrganizedCloudIO, RefusesAnUnorganizedCloud)
 TEST_F (OrganizedCloudIO, RefusesACloudWithoutColor)
 {
   pcl::PointCloud<pcl::PointXYZ> xyz;
-  pcl::copyPointCloud (makeOrganizedCloud (), xyz);
+  pcl::copyPointCloud (makeOrganizedCloud(), xyz);
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("xyz.pcd"), xyz), 0);
   Cloud loaded;
   EXPECT_FALSE (mid::io::loadOrganizedPCD (path ("xyz.pcd"), loaded));
@@ -187,9 +195,9 @@ TEST_F (OrganizedCloudIO, RefusesACloudWithoutColor)
 
 TEST_F (OrganizedCloudIO, RefusesACloudWithoutValidDepth)
 {
-  Cloud cloud = makeOrganizedCloud ();
+  Cloud cloud = makeOrganizedCloud();
   for (auto& p : cloud)
-    p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN ();
+    p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("nan.pcd"), cloud), 0);
   Cloud loaded;
   EXPECT_FALSE (mid::io::loadOrganizedPCD (path ("nan.pcd"), loaded));
@@ -198,9 +206,9 @@ TEST_F (OrganizedCloudIO, RefusesACloudWithoutValidDepth)
 
 TEST_F (OrganizedCloudIO, RefusesACloudInMillimetres)
 {
-  Cloud cloud = makeOrganizedCloud ();
+  Cloud cloud = makeOrganizedCloud();
   for (auto& p : cloud)
-    p.getVector3fMap () *= 1000.0f;
+    p.getVector3fMap() *= 1000.0f;
   std::string problem;
   EXPECT_FALSE (mid::io::checkOrganizedCloud (cloud, problem));
   EXPECT_NE (problem.find ("millimetres"), std::string::npos);
@@ -211,21 +219,101 @@ TEST_F (OrganizedCloudIO, RefusesMismatchedOrMalformedImages)
   cv::Mat color, depth;
   makeFrame (color, depth);
   Cloud cloud;
-  EXPECT_FALSE (mid::io::rgbdToCloud (color (cv::Rect (0, 0, 7, 6)), depth, kIntrinsics, cloud));
+  EXPECT_FALSE (
+      mid::io::rgbdToCloud (color (cv::Rect (0, 0, 7, 6)), depth, kIntrinsics, cloud));
   cv::Mat depth8;
   depth.convertTo (depth8, CV_8U);
   EXPECT_FALSE (mid::io::rgbdToCloud (color, depth8, kIntrinsics, cloud));
-  EXPECT_FALSE (mid::io::rgbdToCloud (color, cv::Mat::zeros (6, 8, CV_16UC1), kIntrinsics, cloud));
-  EXPECT_FALSE (mid::io::rgbdToCloud (color, depth, {0.0, 0.0, 0.0, 0.0, 0.001}, cloud));
-  EXPECT_FALSE (mid::io::rgbdToCloud (color (cv::Rect (0, 0, 1, 1)), depth (cv::Rect (0, 0, 1, 1)),
-                                      kIntrinsics, cloud));
+  EXPECT_FALSE (mid::io::rgbdToCloud (
+      color, cv::Mat::zeros (6, 8, CV_16UC1), kIntrinsics, cloud));
+  EXPECT_FALSE (
+      mid::io::rgbdToCloud (color, depth, {0.0, 0.0, 0.0, 0.0, 0.001}, cloud));
+  EXPECT_FALSE (mid::io::rgbdToCloud (color (cv::Rect (0, 0, 1, 1)),
+                                      depth (cv::Rect (0, 0, 1, 1)),
+                                      kIntrinsics,
+                                      cloud));
   expectCleared (cloud);
 
   ASSERT_TRUE (cv::imwrite (path ("rgb.png"), color));
   ASSERT_TRUE (cv::imwrite (path ("depth8.png"), depth8));
-  EXPECT_FALSE (mid::io::loadRGBD (path ("rgb.png"), path ("depth8.png"), kIntrinsics, cloud));
-  EXPECT_FALSE (mid::io::loadRGBD (path ("rgb.png"), path ("missing.png"), kIntrinsics, cloud));
+  EXPECT_FALSE (
+      mid::io::loadRGBD (path ("rgb.png"), path ("depth8.png"), kIntrinsics, cloud));
+  EXPECT_FALSE (
+      mid::io::loadRGBD (path ("rgb.png"), path ("missing.png"), kIntrinsics, cloud));
   std::ofstream (path ("bad.png")) << "not a png";
-  EXPECT_FALSE (mid::io::loadRGBD (path ("bad.png"), path ("rgb.png"), kIntrinsics, cloud));
+  EXPECT_FALSE (
+      mid::io::loadRGBD (path ("bad.png"), path ("rgb.png"), kIntrinsics, cloud));
+  expectCleared (cloud);
+}
+
+TEST_F (OrganizedCloudIO, DecodesImagesInMemoryLikeFromFiles)
+{
+  cv::Mat color, depth;
+  makeFrame (color, depth);
+  const Cloud expected = makeOrganizedCloud();
+  for (const char* color_format : {".png", ".jpg"}) {
+    Cloud cloud;
+    ASSERT_TRUE (mid::io::decodeRGBD (
+        encode (color_format, color), encode (".png", depth), kIntrinsics, cloud))
+        << color_format;
+    ASSERT_EQ (cloud.size(), expected.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (std::isfinite (expected[i].z)) {
+        EXPECT_EQ (cloud[i].getVector3fMap(), expected[i].getVector3fMap());
+      }
+  }
+}
+
+TEST_F (OrganizedCloudIO, DecodesOnlyPngAndJpeg)
+{
+  cv::Mat color, depth;
+  makeFrame (color, depth);
+  Cloud cloud;
+  // OpenCV reads these too, but the input path only hands PNG and JPEG to a decoder.
+  EXPECT_FALSE (mid::io::decodeRGBD (
+      encode (".bmp", color), encode (".png", depth), kIntrinsics, cloud));
+  EXPECT_FALSE (mid::io::decodeRGBD (
+      encode (".png", color), encode (".tiff", depth), kIntrinsics, cloud));
+  // Depth must be a PNG (16-bit); a JPEG cannot hold it.
+  EXPECT_FALSE (mid::io::decodeRGBD (
+      encode (".png", color), encode (".jpg", color), kIntrinsics, cloud));
+  EXPECT_FALSE (mid::io::decodeRGBD ({}, encode (".png", depth), kIntrinsics, cloud));
+  expectCleared (cloud);
+  // The same through files, whatever their names say.
+  const Bytes bmp = encode (".bmp", color);
+  std::ofstream (path ("rgb.png"), std::ios::binary)
+      .write (reinterpret_cast<const char*> (bmp.data()),
+              static_cast<std::streamsize> (bmp.size()));
+  ASSERT_TRUE (cv::imwrite (path ("depth.png"), depth));
+  EXPECT_FALSE (
+      mid::io::loadRGBD (path ("rgb.png"), path ("depth.png"), kIntrinsics, cloud));
+  expectCleared (cloud);
+}
+
+TEST_F (OrganizedCloudIO, RefusesAnImageHeaderClaimingTooManyPixels)
+{
+  cv::Mat color, depth;
+  makeFrame (color, depth);
+  // A valid PNG whose IHDR is rewritten to 65535 x 65535 (the CRC no longer matches, but the
+  // size is checked before anything is decoded or allocated).
+  Bytes huge = encode (".png", depth);
+  for (const std::size_t at : {16u, 20u}) {
+    huge[at] = huge[at + 1] = 0;
+    huge[at + 2] = huge[at + 3] = 0xFF;
+  }
+  Cloud cloud;
+  EXPECT_FALSE (mid::io::decodeRGBD (encode (".png", color), huge, kIntrinsics, cloud));
+  expectCleared (cloud);
+}
+
+TEST_F (OrganizedCloudIO, RefusesAPcdWhoseHeaderAnnouncesMoreDataThanTheFileHolds)
+{
+  // 16384 x 16384 points in a 160-byte file: PCL alone would allocate and zero 4 GiB.
+  std::ofstream (path ("huge.pcd"))
+      << "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
+         "WIDTH 16384\nHEIGHT 16384\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 268435456\nDATA "
+         "binary\n";
+  Cloud cloud;
+  EXPECT_FALSE (mid::io::loadOrganizedPCD (path ("huge.pcd"), cloud));
   expectCleared (cloud);
 }

@@ -23,32 +23,38 @@ using Rejector = mid::CorrespondenceRejectorPPFTriplet;
   */
 struct TwoInstances
 {
-  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud> ();
+  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
   pcl::Correspondences true_matches;
-  pcl::Correspondences all_matches; // true matches and outliers, each with its own distance
-  Eigen::Isometry3f motion = Eigen::Isometry3f::Identity ();
+  pcl::Correspondences
+      all_matches; // true matches and outliers, each with its own distance
+  Eigen::Isometry3f motion = Eigen::Isometry3f::Identity();
   int n = 0;
 };
 
 /** Points in a cube of side `size` at 0.8 m, with normals within 60 deg of facing the camera. */
 TwoInstances
-makeTwoInstances (const Eigen::Isometry3f& motion, int n = 40, float size = 0.08f,
-                  int outliers = 30, unsigned seed = 3, bool mirror = false)
+makeTwoInstances (const Eigen::Isometry3f& motion,
+                  int n = 40,
+                  float size = 0.08f,
+                  int outliers = 30,
+                  unsigned seed = 3,
+                  bool mirror = false)
 {
   TwoInstances s;
   s.motion = motion;
   s.n = n;
   std::mt19937 rng (seed);
   std::uniform_real_distribution<float> unit (-0.5f, 0.5f);
-  Eigen::Matrix3f linear = motion.linear ();
+  Eigen::Matrix3f linear = motion.linear();
   if (mirror)
-    linear = linear * Eigen::Vector3f (-1, 1, 1).asDiagonal ();
+    linear = linear * Eigen::Vector3f (-1, 1, 1).asDiagonal();
   std::vector<pcl::PointNormal> first;
   for (int i = 0; i < n; ++i) {
     pcl::PointNormal p;
-    p.getVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), unit (rng)) * size +
-                          Eigen::Vector3f (0, 0, 0.8f);
-    p.getNormalVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), -1.0f).normalized ();
+    p.getVector3fMap() = Eigen::Vector3f (unit (rng), unit (rng), unit (rng)) * size +
+                         Eigen::Vector3f (0, 0, 0.8f);
+    p.getNormalVector3fMap() =
+        Eigen::Vector3f (unit (rng), unit (rng), -1.0f).normalized();
     first.push_back (p);
   }
   for (const auto& p : first)
@@ -56,18 +62,20 @@ makeTwoInstances (const Eigen::Isometry3f& motion, int n = 40, float size = 0.08
   const Eigen::Vector3f center (0, 0, 0.8f);
   for (const auto& p : first) {
     pcl::PointNormal q;
-    q.getVector3fMap () = linear * (p.getVector3fMap () - center) + center + motion.translation ();
-    q.getNormalVector3fMap () = linear * p.getNormalVector3fMap ();
+    q.getVector3fMap() =
+        linear * (p.getVector3fMap() - center) + center + motion.translation();
+    q.getNormalVector3fMap() = linear * p.getNormalVector3fMap();
     s.keypoints->push_back (q);
   }
   for (int i = 0; i < outliers; ++i) {
     pcl::PointNormal o;
-    o.getVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), unit (rng)) * 0.4f +
-                          Eigen::Vector3f (0, 0, 0.9f);
-    o.getNormalVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), -1.0f).normalized ();
+    o.getVector3fMap() = Eigen::Vector3f (unit (rng), unit (rng), unit (rng)) * 0.4f +
+                         Eigen::Vector3f (0, 0, 0.9f);
+    o.getNormalVector3fMap() =
+        Eigen::Vector3f (unit (rng), unit (rng), -1.0f).normalized();
     s.keypoints->push_back (o);
   }
-  const int total = static_cast<int> (s.keypoints->size ());
+  const int total = static_cast<int> (s.keypoints->size());
   for (int i = 0; i < n; ++i)
     s.true_matches.emplace_back (i, n + i, 100.0f + static_cast<float> (i));
   s.all_matches = s.true_matches;
@@ -86,7 +94,7 @@ aboutCenter (const Eigen::Isometry3f& motion)
 {
   const Eigen::Vector3f center (0, 0, 0.8f);
   Eigen::Isometry3f about = motion;
-  about.translation () = center + motion.translation () - motion.linear () * center;
+  about.translation() = center + motion.translation() - motion.linear() * center;
   return about;
 }
 
@@ -96,7 +104,9 @@ const Eigen::Isometry3f kMotion =
 using mid::test::poseError;
 
 mid::TripletMatches
-run (Rejector& rejector, const TwoInstances& s, const pcl::Correspondences& matches,
+run (Rejector& rejector,
+     const TwoInstances& s,
+     const pcl::Correspondences& matches,
      pcl::Correspondences* remaining = nullptr)
 {
   rejector.setInputSource (s.keypoints);
@@ -104,7 +114,7 @@ run (Rejector& rejector, const TwoInstances& s, const pcl::Correspondences& matc
   rejector.getRemainingCorrespondences (matches, kept);
   if (remaining != nullptr)
     *remaining = kept;
-  return rejector.getTripletMatches ();
+  return rejector.getTripletMatches();
 }
 
 } // namespace
@@ -115,9 +125,9 @@ TEST (CorrespondenceRejectorPPFTriplet, EveryTripletPoseIsTheKnownMotion)
   Rejector rejector;
   pcl::Correspondences remaining;
   const auto triplets = run (rejector, s, s.all_matches, &remaining);
-  ASSERT_GT (triplets.size (), 20u);
-  const Eigen::Matrix4f forward = aboutCenter (kMotion).matrix ();
-  const Eigen::Matrix4f backward = aboutCenter (kMotion).inverse ().matrix ();
+  ASSERT_GT (triplets.size(), 20u);
+  const Eigen::Matrix4f forward = aboutCenter (kMotion).matrix();
+  const Eigen::Matrix4f backward = aboutCenter (kMotion).inverse().matrix();
   for (const auto& t : triplets) {
     // A triplet may map the first instance onto the second or, reversed, the second onto the first.
     const bool reversed = t.correspondences[0].index_query >= s.n;
@@ -131,7 +141,7 @@ TEST (CorrespondenceRejectorPPFTriplet, EveryTripletPoseIsTheKnownMotion)
   // Only true matches remain.
   for (const auto& c : remaining)
     EXPECT_EQ (c.index_match - c.index_query, s.n);
-  EXPECT_GT (remaining.size (), static_cast<std::size_t> (s.n / 2));
+  EXPECT_GT (remaining.size(), static_cast<std::size_t> (s.n / 2));
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, RejectsMirroredTooSmallAndTooAcuteTriplets)
@@ -139,28 +149,31 @@ TEST (CorrespondenceRejectorPPFTriplet, RejectsMirroredTooSmallAndTooAcuteTriple
   Rejector rejector;
   // A mirror image passes the point pair features but not sidedness.
   const TwoInstances mirrored = makeTwoInstances (kMotion, 40, 0.08f, 0, 3, true);
-  EXPECT_TRUE (run (rejector, mirrored, mirrored.true_matches).empty ());
+  EXPECT_TRUE (run (rejector, mirrored, mirrored.true_matches).empty());
 
   // Every edge shorter than 10 mm.
   const TwoInstances tiny = makeTwoInstances (kMotion, 40, 0.005f, 0);
-  EXPECT_TRUE (run (rejector, tiny, tiny.true_matches).empty ());
+  EXPECT_TRUE (run (rejector, tiny, tiny.true_matches).empty());
   rejector.setMinEdgeLength (0.001f);
-  EXPECT_FALSE (run (rejector, tiny, tiny.true_matches).empty ());
+  EXPECT_FALSE (run (rejector, tiny, tiny.true_matches).empty());
   rejector.setMinEdgeLength (0.010f);
 
   // All points on a thin line: every triangle is too acute.
   TwoInstances line = makeTwoInstances (kMotion, 40, 0.08f, 0);
   for (int i = 0; i < 2 * line.n; ++i) {
     auto& p = (*line.keypoints)[static_cast<std::size_t> (i)];
-    const Eigen::Vector3f local = i < line.n ? Eigen::Vector3f (p.getVector3fMap ())
-                                             : aboutCenter (kMotion).inverse () * p.getVector3fMap ();
-    const Eigen::Vector3f squeezed (local.x (), 0.001f * local.y (), 0.8f + 0.001f * (local.z () - 0.8f));
-    p.getVector3fMap () = i < line.n ? squeezed : Eigen::Vector3f (aboutCenter (kMotion) * squeezed);
+    const Eigen::Vector3f local =
+        i < line.n ? Eigen::Vector3f (p.getVector3fMap())
+                   : aboutCenter (kMotion).inverse() * p.getVector3fMap();
+    const Eigen::Vector3f squeezed (
+        local.x(), 0.001f * local.y(), 0.8f + 0.001f * (local.z() - 0.8f));
+    p.getVector3fMap() =
+        i < line.n ? squeezed : Eigen::Vector3f (aboutCenter (kMotion) * squeezed);
   }
-  EXPECT_TRUE (run (rejector, line, line.true_matches).empty ());
+  EXPECT_TRUE (run (rejector, line, line.true_matches).empty());
   rejector.setMinTriangleAngle (0.0f);
   rejector.setMaxDistanceDifference (0.01f);
-  EXPECT_FALSE (run (rejector, line, line.true_matches).empty ());
+  EXPECT_FALSE (run (rejector, line, line.true_matches).empty());
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, RejectsOverlappingTriangles)
@@ -169,9 +182,9 @@ TEST (CorrespondenceRejectorPPFTriplet, RejectsOverlappingTriangles)
   const Eigen::Isometry3f nudge = mid::test::rigidMotion ({0.003f, 0.0f, 0.0f});
   const TwoInstances s = makeTwoInstances (nudge, 40, 0.08f, 0);
   Rejector rejector;
-  EXPECT_TRUE (run (rejector, s, s.true_matches).empty ());
+  EXPECT_TRUE (run (rejector, s, s.true_matches).empty());
   rejector.setOverlapDistance (-1.0f);
-  EXPECT_FALSE (run (rejector, s, s.true_matches).empty ());
+  EXPECT_FALSE (run (rejector, s, s.true_matches).empty());
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, EachKeypointTakesPartInAtMostLTriplets)
@@ -181,7 +194,7 @@ TEST (CorrespondenceRejectorPPFTriplet, EachKeypointTakesPartInAtMostLTriplets)
     Rejector rejector;
     rejector.setMaxTripletsPerKeypoint (limit);
     const auto triplets = run (rejector, s, s.all_matches);
-    ASSERT_FALSE (triplets.empty ());
+    ASSERT_FALSE (triplets.empty());
     std::map<pcl::index_t, int> uses;
     for (const auto& t : triplets)
       for (const auto& c : t.correspondences) {
@@ -191,12 +204,12 @@ TEST (CorrespondenceRejectorPPFTriplet, EachKeypointTakesPartInAtMostLTriplets)
     for (const auto& entry : uses)
       EXPECT_LE (entry.second, limit) << "keypoint " << entry.first;
     if (limit == 1) {
-      EXPECT_LE (triplets.size (), static_cast<std::size_t> (2 * s.n / 6));
+      EXPECT_LE (triplets.size(), static_cast<std::size_t> (2 * s.n / 6));
     }
   }
   Rejector capped;
   capped.setMaxTriplets (5);
-  EXPECT_EQ (run (capped, s, s.all_matches).size (), 5u);
+  EXPECT_EQ (run (capped, s, s.all_matches).size(), 5u);
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, OutputDependsOnlyOnTheInputNotItsOrder)
@@ -206,14 +219,16 @@ TEST (CorrespondenceRejectorPPFTriplet, OutputDependsOnlyOnTheInputNotItsOrder)
   const auto first = run (rejector, s, s.all_matches);
   const auto again = run (rejector, s, s.all_matches);
   pcl::Correspondences shuffled = s.all_matches;
-  std::shuffle (shuffled.begin (), shuffled.end (), std::mt19937 (11));
+  std::shuffle (shuffled.begin(), shuffled.end(), std::mt19937 (11));
   const auto reordered = run (rejector, s, shuffled);
-  ASSERT_EQ (first.size (), again.size ());
-  ASSERT_EQ (first.size (), reordered.size ());
-  for (std::size_t i = 0; i < first.size (); ++i)
+  ASSERT_EQ (first.size(), again.size());
+  ASSERT_EQ (first.size(), reordered.size());
+  for (std::size_t i = 0; i < first.size(); ++i)
     for (int k = 0; k < 3; ++k) {
-      EXPECT_EQ (first[i].correspondences[k].index_query, reordered[i].correspondences[k].index_query);
-      EXPECT_EQ (first[i].correspondences[k].index_match, reordered[i].correspondences[k].index_match);
+      EXPECT_EQ (first[i].correspondences[k].index_query,
+                 reordered[i].correspondences[k].index_query);
+      EXPECT_EQ (first[i].correspondences[k].index_match,
+                 reordered[i].correspondences[k].index_match);
       EXPECT_EQ (first[i].transformation, again[i].transformation);
     }
 }
@@ -221,32 +236,34 @@ TEST (CorrespondenceRejectorPPFTriplet, OutputDependsOnlyOnTheInputNotItsOrder)
 TEST (CorrespondenceRejectorPPFTriplet, WorksAsAPlainPclRejector)
 {
   const TwoInstances s = makeTwoInstances (kMotion);
-  pcl::registration::CorrespondenceRejector::Ptr rejector = pcl::make_shared<Rejector> ();
-  ASSERT_TRUE (rejector->requiresSourcePoints ());
+  pcl::registration::CorrespondenceRejector::Ptr rejector =
+      pcl::make_shared<Rejector>();
+  ASSERT_TRUE (rejector->requiresSourcePoints());
   // The way pcl::Registration hands clouds to its rejectors: as PCLPointCloud2.
-  auto blob = pcl::make_shared<pcl::PCLPointCloud2> ();
+  auto blob = pcl::make_shared<pcl::PCLPointCloud2>();
   pcl::toPCLPointCloud2 (*s.keypoints, *blob);
   rejector->setSourcePoints (blob);
   rejector->setSourceNormals (blob);
-  rejector->setInputCorrespondences (pcl::make_shared<pcl::Correspondences> (s.all_matches));
+  rejector->setInputCorrespondences (
+      pcl::make_shared<pcl::Correspondences> (s.all_matches));
   pcl::Correspondences remaining;
   rejector->getCorrespondences (remaining);
-  ASSERT_FALSE (remaining.empty ());
+  ASSERT_FALSE (remaining.empty());
   for (const auto& c : remaining)
     EXPECT_EQ (c.index_match - c.index_query, s.n);
   pcl::Indices rejected;
   rejector->getRejectedQueryIndices (remaining, rejected);
-  EXPECT_EQ (rejected.size () + remaining.size (), s.all_matches.size ());
-  EXPECT_EQ (rejector->getClassName (), "CorrespondenceRejectorPPFTriplet");
+  EXPECT_EQ (rejected.size() + remaining.size(), s.all_matches.size());
+  EXPECT_EQ (rejector->getClassName(), "CorrespondenceRejectorPPFTriplet");
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, FindsTheKnownMotionBetweenTwoTexturedCopies)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   mid::SIFTKeypointExtractor<pcl::PointXYZRGB> extractor;
   extractor.setInputCloud (scene.cloud);
-  auto keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  auto keypoints = pcl::make_shared<mid::KeypointCloud>();
+  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud>();
   ASSERT_TRUE (extractor.compute (*keypoints, *descriptors));
   mid::SelfMatcher matcher;
   matcher.setInputKeypoints (keypoints);
@@ -258,18 +275,18 @@ TEST (CorrespondenceRejectorPPFTriplet, FindsTheKnownMotionBetweenTwoTexturedCop
   rejector.setInputSource (keypoints);
   pcl::Correspondences remaining;
   rejector.getRemainingCorrespondences (matches, remaining);
-  const auto& triplets = rejector.getTripletMatches ();
-  ASSERT_GT (triplets.size (), 30u);
+  const auto& triplets = rejector.getTripletMatches();
+  ASSERT_GT (triplets.size(), 30u);
   std::size_t consistent = 0;
   for (const auto& t : triplets) {
-    const auto forward = poseError (t.transformation, scene.a_to_b.matrix ());
-    const auto backward = poseError (t.transformation, scene.a_to_b.inverse ().matrix ());
+    const auto forward = poseError (t.transformation, scene.a_to_b.matrix());
+    const auto backward = poseError (t.transformation, scene.a_to_b.inverse().matrix());
     const auto& best = forward.second < backward.second ? forward : backward;
     // Keypoints are whole pixels (1.5 mm at 0.8 m) on flat copies.
     if (best.first < 5.0 * M_PI / 180.0 && best.second < 0.008)
       ++consistent;
   }
-  EXPECT_GE (consistent, triplets.size () * 95 / 100);
+  EXPECT_GE (consistent, triplets.size() * 95 / 100);
 }
 
 TEST (CorrespondenceRejectorPPFTriplet, RefusesBadInputWithAnEmptyResult)
@@ -278,21 +295,21 @@ TEST (CorrespondenceRejectorPPFTriplet, RefusesBadInputWithAnEmptyResult)
   Rejector rejector;
   pcl::Correspondences remaining (3);
   rejector.getRemainingCorrespondences (s.all_matches, remaining); // no source
-  EXPECT_TRUE (remaining.empty ());
+  EXPECT_TRUE (remaining.empty());
 
   auto expectEmpty = [&] (const pcl::Correspondences& matches) {
     remaining.resize (3);
     rejector.getRemainingCorrespondences (matches, remaining);
-    EXPECT_TRUE (remaining.empty ());
-    EXPECT_TRUE (rejector.getTripletMatches ().empty ());
+    EXPECT_TRUE (remaining.empty());
+    EXPECT_TRUE (rejector.getTripletMatches().empty());
   };
-  rejector.setInputSource (pcl::make_shared<mid::KeypointCloud> ());
+  rejector.setInputSource (pcl::make_shared<mid::KeypointCloud>());
   expectEmpty (s.all_matches);
   rejector.setInputSource (s.keypoints);
   pcl::Correspondences out_of_range = s.true_matches;
-  out_of_range.emplace_back (0, static_cast<pcl::index_t> (s.keypoints->size ()), 1.0f);
+  out_of_range.emplace_back (0, static_cast<pcl::index_t> (s.keypoints->size()), 1.0f);
   expectEmpty (out_of_range);
-  out_of_range.back () = pcl::Correspondence (-1, 0, 1.0f);
+  out_of_range.back() = pcl::Correspondence (-1, 0, 1.0f);
   expectEmpty (out_of_range);
   // A separate target that is too small for the indices.
   rejector.setInputTarget (pcl::make_shared<mid::KeypointCloud> (5, 1));
@@ -301,7 +318,7 @@ TEST (CorrespondenceRejectorPPFTriplet, RefusesBadInputWithAnEmptyResult)
 
   auto no_normals = pcl::make_shared<mid::KeypointCloud> (*s.keypoints);
   for (auto& p : *no_normals)
-    p.getNormalVector3fMap ().setZero ();
+    p.getNormalVector3fMap().setZero();
   rejector.setInputSource (no_normals);
   expectEmpty (s.true_matches);
   rejector.setInputSource (s.keypoints);
@@ -317,5 +334,5 @@ TEST (CorrespondenceRejectorPPFTriplet, RefusesBadInputWithAnEmptyResult)
   rejector.setMaxAngleDifference (0.6f);
   expectEmpty ({});
   rejector.getRemainingCorrespondences (s.true_matches, remaining);
-  EXPECT_FALSE (remaining.empty ());
+  EXPECT_FALSE (remaining.empty());
 }

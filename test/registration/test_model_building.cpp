@@ -17,15 +17,17 @@
 namespace {
 
 using mid::test::poseError;
-using Poses = std::vector<Eigen::Isometry3f, Eigen::aligned_allocator<Eigen::Isometry3f>>;
+using Poses =
+    std::vector<Eigen::Isometry3f, Eigen::aligned_allocator<Eigen::Isometry3f>>;
 
 /** Instances of random objects (each `points` keypoints in a 10 cm cube with a random
   * descriptor per point, shared by its copies up to small noise), then random clutter.
   */
 struct Frame
 {
-  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  mid::SIFTDescriptorCloud::Ptr descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
+  mid::SIFTDescriptorCloud::Ptr descriptors =
+      pcl::make_shared<mid::SIFTDescriptorCloud>();
   std::vector<int> object_of;   // per keypoint: object type, -1 for clutter
   std::vector<int> instance_of; // per keypoint: instance number, -1 for clutter
   std::vector<int> point_of;    // per keypoint: point of its object
@@ -38,16 +40,16 @@ struct Frame
   addObject (int points)
   {
     std::uniform_real_distribution<float> unit (-0.05f, 0.05f), value (0.0f, 80.0f);
-    objects.emplace_back ();
-    object_descriptors.emplace_back ();
+    objects.emplace_back();
+    object_descriptors.emplace_back();
     for (int k = 0; k < points; ++k) {
-      objects.back ().emplace_back (unit (rng), unit (rng), unit (rng));
+      objects.back().emplace_back (unit (rng), unit (rng), unit (rng));
       mid::SIFTDescriptor d;
       for (float& v : d.histogram)
         v = value (rng);
-      object_descriptors.back ().push_back (d);
+      object_descriptors.back().push_back (d);
     }
-    return static_cast<int> (objects.size ()) - 1;
+    return static_cast<int> (objects.size()) - 1;
   }
 
   /** Add an instance of object `o`; noise (metres) on the positions. */
@@ -57,15 +59,16 @@ struct Frame
     std::normal_distribution<float> jitter (0.0f, noise > 0.0f ? noise : 1e-9f);
     std::normal_distribution<float> descriptor_jitter (0.0f, 3.0f);
     std::vector<int> indices;
-    const int instance = static_cast<int> (poses.size ());
+    const int instance = static_cast<int> (poses.size());
     poses.push_back (pose);
-    for (std::size_t k = 0; k < objects[static_cast<std::size_t> (o)].size (); ++k) {
+    for (std::size_t k = 0; k < objects[static_cast<std::size_t> (o)].size(); ++k) {
       pcl::PointNormal p;
-      p.getVector3fMap () = pose * objects[static_cast<std::size_t> (o)][k] +
-                            (noise > 0.0f ? Eigen::Vector3f (jitter (rng), jitter (rng), jitter (rng))
-                                          : Eigen::Vector3f::Zero ());
-      p.getNormalVector3fMap () = pose.linear () * Eigen::Vector3f::UnitZ ();
-      indices.push_back (static_cast<int> (keypoints->size ()));
+      p.getVector3fMap() =
+          pose * objects[static_cast<std::size_t> (o)][k] +
+          (noise > 0.0f ? Eigen::Vector3f (jitter (rng), jitter (rng), jitter (rng))
+                        : Eigen::Vector3f::Zero());
+      p.getNormalVector3fMap() = pose.linear() * Eigen::Vector3f::UnitZ();
+      indices.push_back (static_cast<int> (keypoints->size()));
       keypoints->push_back (p);
       mid::SIFTDescriptor d = object_descriptors[static_cast<std::size_t> (o)][k];
       for (float& v : d.histogram)
@@ -84,8 +87,8 @@ struct Frame
     std::uniform_real_distribution<float> unit (-0.5f, 0.5f), value (0.0f, 80.0f);
     for (int i = 0; i < count; ++i) {
       pcl::PointNormal p;
-      p.getVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), 1.0f + unit (rng));
-      p.getNormalVector3fMap () = -Eigen::Vector3f::UnitZ ();
+      p.getVector3fMap() = Eigen::Vector3f (unit (rng), unit (rng), 1.0f + unit (rng));
+      p.getNormalVector3fMap() = -Eigen::Vector3f::UnitZ();
       keypoints->push_back (p);
       mid::SIFTDescriptor d;
       for (float& v : d.histogram)
@@ -99,16 +102,20 @@ struct Frame
 
   /** The cluster of a pair of instances: every point matched, with the exact motion. */
   mid::TripletCluster
-  cluster (const std::vector<int>& a, const std::vector<int>& b, std::size_t count) const
+  cluster (const std::vector<int>& a,
+           const std::vector<int>& b,
+           std::size_t count) const
   {
     mid::TripletCluster c;
-    Eigen::Matrix3Xf from (3, static_cast<Eigen::Index> (count)), to (3, from.cols ());
+    Eigen::Matrix3Xf from (3, static_cast<Eigen::Index> (count)), to (3, from.cols());
     for (std::size_t k = 0; k < count; ++k) {
       c.correspondences.emplace_back (a[k], b[k], 0.0f);
       c.source_indices.push_back (a[k]);
       c.target_indices.push_back (b[k]);
-      from.col (static_cast<Eigen::Index> (k)) = (*keypoints)[static_cast<std::size_t> (a[k])].getVector3fMap ();
-      to.col (static_cast<Eigen::Index> (k)) = (*keypoints)[static_cast<std::size_t> (b[k])].getVector3fMap ();
+      from.col (static_cast<Eigen::Index> (k)) =
+          (*keypoints)[static_cast<std::size_t> (a[k])].getVector3fMap();
+      to.col (static_cast<Eigen::Index> (k)) =
+          (*keypoints)[static_cast<std::size_t> (b[k])].getVector3fMap();
     }
     c.transformation = mid::estimateRigidTransform (from, to, &c.rms_error);
     return c;
@@ -128,19 +135,24 @@ trueInstance (const Frame& f, const mid::ModelInstance& instance)
   std::set<int> seen;
   for (const auto k : instance.keypoints)
     seen.insert (f.instance_of[static_cast<std::size_t> (k)]);
-  EXPECT_EQ (seen.size (), 1u);
-  return *seen.begin ();
+  EXPECT_EQ (seen.size(), 1u);
+  return *seen.begin();
 }
 
 void
-expectPosesRelativeToTruth (const Frame& f, const mid::ObjectModel& model, double max_angle, double max_distance)
+expectPosesRelativeToTruth (const Frame& f,
+                            const mid::ObjectModel& model,
+                            double max_angle,
+                            double max_distance)
 {
-  const int first = trueInstance (f, model.instances.front ());
-  for (std::size_t i = 1; i < model.instances.size (); ++i) {
+  const int first = trueInstance (f, model.instances.front());
+  for (std::size_t i = 1; i < model.instances.size(); ++i) {
     const int other = trueInstance (f, model.instances[i]);
-    const Eigen::Matrix4f estimated = model.instances[i].pose * model.instances.front ().pose.inverse ();
+    const Eigen::Matrix4f estimated =
+        model.instances[i].pose * model.instances.front().pose.inverse();
     const Eigen::Matrix4f truth = (f.poses[static_cast<std::size_t> (other)] *
-                                   f.poses[static_cast<std::size_t> (first)].inverse ()).matrix ();
+                                   f.poses[static_cast<std::size_t> (first)].inverse())
+                                      .matrix();
     const auto error = poseError (estimated, truth);
     EXPECT_LT (error.first, max_angle);
     EXPECT_LT (error.second, max_distance);
@@ -160,7 +172,7 @@ TEST (MultiInstanceModelBuilder, ChainsClustersIntoOneModelPerObject)
   const auto e = f.addInstance (can, pose (0.2f, 0.3f, 2.5f, {0, 1, 0}));
   f.addClutter (25);
   // a-b and b-c share the points of b (only 20 of 30 matched each time): one chain a-b-c.
-  auto clusters = std::make_shared<mid::TripletClusters> ();
+  auto clusters = std::make_shared<mid::TripletClusters>();
   clusters->push_back (f.cluster (a, b, 25));
   clusters->push_back (f.cluster (c, b, 20));
   clusters->push_back (f.cluster (d, e, 20));
@@ -171,25 +183,26 @@ TEST (MultiInstanceModelBuilder, ChainsClustersIntoOneModelPerObject)
   builder.setClusters (clusters);
   mid::ObjectModels models;
   ASSERT_TRUE (builder.compute (models));
-  ASSERT_EQ (models.size (), 2u);
-  ASSERT_EQ (models[0].instances.size (), 3u); // a, b, c
-  ASSERT_EQ (models[1].instances.size (), 2u); // d, e
-  EXPECT_EQ (models[0].landmarks.size (), 25u);
-  EXPECT_EQ (models[1].landmarks.size (), 20u);
+  ASSERT_EQ (models.size(), 2u);
+  ASSERT_EQ (models[0].instances.size(), 3u); // a, b, c
+  ASSERT_EQ (models[1].instances.size(), 2u); // d, e
+  EXPECT_EQ (models[0].landmarks.size(), 25u);
+  EXPECT_EQ (models[1].landmarks.size(), 20u);
   expectPosesRelativeToTruth (f, models[0], 1e-4, 1e-5);
   expectPosesRelativeToTruth (f, models[1], 1e-4, 1e-5);
   for (const auto& model : models) {
     for (const auto& instance : model.instances)
       EXPECT_LT (instance.rms_error, 1e-5f);
     // The model frame is centred on the landmarks.
-    Eigen::Vector3f centroid = Eigen::Vector3f::Zero ();
+    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
     for (const auto& l : model.landmarks)
-      centroid += l.getVector3fMap ();
-    EXPECT_LT ((centroid / static_cast<float> (model.landmarks.size ())).norm (), 1e-5f);
-    EXPECT_EQ (model.descriptors.size (), model.descriptor_landmarks.size ());
+      centroid += l.getVector3fMap();
+    EXPECT_LT ((centroid / static_cast<float> (model.landmarks.size())).norm(), 1e-5f);
+    EXPECT_EQ (model.descriptors.size(), model.descriptor_landmarks.size());
   }
   // Clutter and the unmatched points of the instances are unused.
-  EXPECT_EQ (builder.getUnusedKeypoints ().size (), 25u + (3u * 30u - 25u - 25u - 20u) + 0u);
+  EXPECT_EQ (builder.getUnusedKeypoints().size(),
+             25u + (3u * 30u - 25u - 25u - 20u) + 0u);
 }
 
 TEST (MultiInstanceModelBuilder, RefusesInconsistentInput)
@@ -202,7 +215,7 @@ TEST (MultiInstanceModelBuilder, RefusesInconsistentInput)
   mid::MultiInstanceModelBuilder builder;
   mid::ObjectModels models (2);
   EXPECT_FALSE (builder.compute (models));
-  EXPECT_TRUE (models.empty ());
+  EXPECT_TRUE (models.empty());
   builder.setInputCloud (f.keypoints);
   builder.setInputDescriptors (pcl::make_shared<mid::SIFTDescriptorCloud> (3, 1));
   builder.setClusters (clusters);
@@ -213,7 +226,7 @@ TEST (MultiInstanceModelBuilder, RefusesInconsistentInput)
   (*clusters)[0].correspondences[0].index_match = b[0];
   (*clusters)[0].transformation (0, 0) = NAN;
   EXPECT_FALSE (builder.compute (models));
-  EXPECT_TRUE (models.empty ());
+  EXPECT_TRUE (models.empty());
 }
 
 TEST (ModelRefinement, LowersTheCostMonotonicallyTowardsTheTruth)
@@ -222,8 +235,12 @@ TEST (ModelRefinement, LowersTheCostMonotonicallyTowardsTheTruth)
   const int box = f.addObject (40);
   Poses truth;
   for (int i = 0; i < 4; ++i)
-    f.addInstance (box, pose (-0.3f + 0.2f * static_cast<float> (i), 0.0f, 0.7f * static_cast<float> (i),
-                              {1, 1, 1}), 0.0005f);
+    f.addInstance (box,
+                   pose (-0.3f + 0.2f * static_cast<float> (i),
+                         0.0f,
+                         0.7f * static_cast<float> (i),
+                         {1, 1, 1}),
+                   0.0005f);
   // A model from noisy observations and perturbed poses (reference instance 0 exact).
   mid::ObjectModel model;
   model.landmarks.resize (40);
@@ -233,28 +250,32 @@ TEST (ModelRefinement, LowersTheCostMonotonicallyTowardsTheTruth)
   for (int i = 0; i < 4; ++i) {
     Eigen::Isometry3f perturbed = f.poses[static_cast<std::size_t> (i)];
     if (i > 0)
-      perturbed = f.poses[static_cast<std::size_t> (i)] *
-                  mid::test::rigidMotion ({0.004f * small (rng), 0.004f * small (rng), 0.004f * small (rng)},
-                                          0.05f, {small (rng), small (rng), small (rng)});
-    model.instances[static_cast<std::size_t> (i)].pose = perturbed.matrix ();
+      perturbed =
+          f.poses[static_cast<std::size_t> (i)] *
+          mid::test::rigidMotion (
+              {0.004f * small (rng), 0.004f * small (rng), 0.004f * small (rng)},
+              0.05f,
+              {small (rng), small (rng), small (rng)});
+    model.instances[static_cast<std::size_t> (i)].pose = perturbed.matrix();
     for (int k = 0; k < 40; ++k) {
       model.instances[static_cast<std::size_t> (i)].keypoints.push_back (i * 40 + k);
       model.instances[static_cast<std::size_t> (i)].landmarks.push_back (k);
     }
   }
   for (int k = 0; k < 40; ++k)
-    model.landmarks[static_cast<std::size_t> (k)].getVector3fMap () =
-        f.poses[0].inverse () * (*f.keypoints)[static_cast<std::size_t> (k)].getVector3fMap ();
+    model.landmarks[static_cast<std::size_t> (k)].getVector3fMap() =
+        f.poses[0].inverse() *
+        (*f.keypoints)[static_cast<std::size_t> (k)].getVector3fMap();
   std::vector<float> costs;
   const float rms = mid::refineModel (model, *f.keypoints, 50, 0, &costs);
-  ASSERT_GE (costs.size (), 2u);
-  for (std::size_t i = 1; i < costs.size (); ++i)
+  ASSERT_GE (costs.size(), 2u);
+  for (std::size_t i = 1; i < costs.size(); ++i)
     EXPECT_LE (costs[i], costs[i - 1] * (1.0f + 1e-5f));
-  EXPECT_LT (costs.back (), 0.05f * costs.front ());
+  EXPECT_LT (costs.back(), 0.05f * costs.front());
   EXPECT_LT (rms, 0.001f); // about the 0.5 mm noise
   for (int i = 1; i < 4; ++i) {
     const auto error = poseError (model.instances[static_cast<std::size_t> (i)].pose,
-                                  f.poses[static_cast<std::size_t> (i)].matrix ());
+                                  f.poses[static_cast<std::size_t> (i)].matrix());
     EXPECT_LT (error.first, 0.5 * M_PI / 180.0);
     EXPECT_LT (error.second, 0.001);
   }
@@ -266,13 +287,14 @@ namespace {
 std::shared_ptr<mid::ObjectModel>
 trueModel (const Frame& f, int o)
 {
-  auto model = std::make_shared<mid::ObjectModel> ();
-  for (std::size_t k = 0; k < f.objects[static_cast<std::size_t> (o)].size (); ++k) {
+  auto model = std::make_shared<mid::ObjectModel>();
+  for (std::size_t k = 0; k < f.objects[static_cast<std::size_t> (o)].size(); ++k) {
     pcl::PointNormal p;
-    p.getVector3fMap () = f.objects[static_cast<std::size_t> (o)][k];
-    p.getNormalVector3fMap () = Eigen::Vector3f::UnitZ ();
+    p.getVector3fMap() = f.objects[static_cast<std::size_t> (o)][k];
+    p.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
     model->landmarks.push_back (p);
-    model->descriptors.push_back (f.object_descriptors[static_cast<std::size_t> (o)][k]);
+    model->descriptors.push_back (
+        f.object_descriptors[static_cast<std::size_t> (o)][k]);
     model->descriptor_landmarks.push_back (static_cast<int> (k));
   }
   mid::updateModelDiameter (*model);
@@ -287,8 +309,12 @@ TEST (ModelInstanceDetector, FindsEveryInstanceIncludingASingleOne)
     Frame f;
     const int box = f.addObject (30), other = f.addObject (30);
     for (int i = 0; i < copies; ++i)
-      f.addInstance (box, pose (-0.3f + 0.2f * static_cast<float> (i), 0.05f * static_cast<float> (i),
-                                1.1f * static_cast<float> (i), {1, 2, 0}), 0.0005f);
+      f.addInstance (box,
+                     pose (-0.3f + 0.2f * static_cast<float> (i),
+                           0.05f * static_cast<float> (i),
+                           1.1f * static_cast<float> (i),
+                           {1, 2, 0}),
+                     0.0005f);
     f.addInstance (other, pose (0.0f, -0.3f, 0.3f, {0, 0, 1}));
     f.addClutter (60);
     mid::ModelInstanceDetector detector;
@@ -298,22 +324,23 @@ TEST (ModelInstanceDetector, FindsEveryInstanceIncludingASingleOne)
     detector.setSeed (5);
     mid::ModelInstances found;
     ASSERT_TRUE (detector.detect (found));
-    ASSERT_EQ (found.size (), static_cast<std::size_t> (copies));
+    ASSERT_EQ (found.size(), static_cast<std::size_t> (copies));
     std::set<int> instances;
     for (const auto& instance : found) {
       const int truth = trueInstance (f, instance);
       instances.insert (truth);
-      const auto error = poseError (instance.pose, f.poses[static_cast<std::size_t> (truth)].matrix ());
+      const auto error =
+          poseError (instance.pose, f.poses[static_cast<std::size_t> (truth)].matrix());
       EXPECT_LT (error.first, 1.0 * M_PI / 180.0);
       EXPECT_LT (error.second, 0.002);
-      EXPECT_GE (instance.keypoints.size (), 25u);
+      EXPECT_GE (instance.keypoints.size(), 25u);
     }
-    EXPECT_EQ (instances.size (), static_cast<std::size_t> (copies));
+    EXPECT_EQ (instances.size(), static_cast<std::size_t> (copies));
 
     mid::ModelInstances again;
     ASSERT_TRUE (detector.detect (again));
-    ASSERT_EQ (again.size (), found.size ());
-    for (std::size_t i = 0; i < found.size (); ++i)
+    ASSERT_EQ (again.size(), found.size());
+    for (std::size_t i = 0; i < found.size(); ++i)
       EXPECT_EQ (again[i].pose, found[i].pose);
   }
 }
@@ -328,22 +355,22 @@ TEST (ModelInstanceDetector, RespectsCandidatesAndTheInlierRequirements)
   detector.setModel (trueModel (f, box));
   detector.setInputKeypoints (f.keypoints);
   detector.setInputDescriptors (f.descriptors);
-  detector.setCandidates (pcl::make_shared<pcl::Indices> (a.begin (), a.end ()));
+  detector.setCandidates (pcl::make_shared<pcl::Indices> (a.begin(), a.end()));
   mid::ModelInstances found;
   ASSERT_TRUE (detector.detect (found));
-  ASSERT_EQ (found.size (), 1u);
-  EXPECT_EQ (trueInstance (f, found.front ()), 0);
+  ASSERT_EQ (found.size(), 1u);
+  EXPECT_EQ (trueInstance (f, found.front()), 0);
 
-  detector.setCandidates (pcl::make_shared<pcl::Indices> (a.begin (), a.begin () + 4));
+  detector.setCandidates (pcl::make_shared<pcl::Indices> (a.begin(), a.begin() + 4));
   ASSERT_TRUE (detector.detect (found));
-  EXPECT_TRUE (found.empty ()); // 4 keypoints cannot give 5 inliers
+  EXPECT_TRUE (found.empty()); // 4 keypoints cannot give 5 inliers
 
   detector.setCandidates (pcl::make_shared<pcl::Indices> (1, 5000));
   EXPECT_FALSE (detector.detect (found));
   detector.setCandidates (nullptr);
   detector.setMinInliers (2);
   EXPECT_FALSE (detector.detect (found));
-  EXPECT_TRUE (found.empty ());
+  EXPECT_TRUE (found.empty());
 }
 
 TEST (ModelMerging, TwoPartialModelsOfOneObjectBecomeOne)
@@ -354,31 +381,35 @@ TEST (ModelMerging, TwoPartialModelsOfOneObjectBecomeOne)
   const auto b = f.addInstance (box, pose (0.2f, 0.0f, 1.3f, {0, 1, 0}));
   // Two models of the same two instances: points 0-17 and points 12-29 (overlap 12-17).
   auto build = [&] (int first, int last) {
-    std::vector<int> pa (a.begin () + first, a.begin () + last), pb (b.begin () + first, b.begin () + last);
-    auto clusters = std::make_shared<mid::TripletClusters> (1, f.cluster (pa, pb, pa.size ()));
+    std::vector<int> pa (a.begin() + first, a.begin() + last),
+        pb (b.begin() + first, b.begin() + last);
+    auto clusters =
+        std::make_shared<mid::TripletClusters> (1, f.cluster (pa, pb, pa.size()));
     mid::MultiInstanceModelBuilder builder;
     builder.setInputCloud (f.keypoints);
     builder.setInputDescriptors (f.descriptors);
     builder.setClusters (clusters);
     mid::ObjectModels models;
     EXPECT_TRUE (builder.compute (models));
-    return models.front ();
+    return models.front();
   };
   mid::ObjectModel first = build (0, 18);
   const mid::ObjectModel second = build (12, 30);
   // Where `second`'s frame sits in `first`'s: from their instances of the same true instance.
-  const Eigen::Matrix4f first_to_second = second.instances[0].pose.inverse () * first.instances[0].pose;
+  const Eigen::Matrix4f first_to_second =
+      second.instances[0].pose.inverse() * first.instances[0].pose;
   std::vector<std::pair<int, int>> same;
-  for (std::size_t o = 0; o < first.instances[0].keypoints.size (); ++o)
-    for (std::size_t p = 0; p < second.instances[0].keypoints.size (); ++p)
+  for (std::size_t o = 0; o < first.instances[0].keypoints.size(); ++o)
+    for (std::size_t p = 0; p < second.instances[0].keypoints.size(); ++p)
       if (first.instances[0].keypoints[o] == second.instances[0].keypoints[p])
-        same.emplace_back (first.instances[0].landmarks[o], second.instances[0].landmarks[p]);
-  ASSERT_EQ (same.size (), 6u);
+        same.emplace_back (first.instances[0].landmarks[o],
+                           second.instances[0].landmarks[p]);
+  ASSERT_EQ (same.size(), 6u);
   mid::mergeModel (first, second, first_to_second, same, 0.17f, 0.01f);
-  EXPECT_EQ (first.landmarks.size (), 30u);
-  ASSERT_EQ (first.instances.size (), 2u); // the same two instances, joined
+  EXPECT_EQ (first.landmarks.size(), 30u);
+  ASSERT_EQ (first.instances.size(), 2u); // the same two instances, joined
   for (const auto& instance : first.instances)
-    EXPECT_EQ (instance.keypoints.size (), 30u);
+    EXPECT_EQ (instance.keypoints.size(), 30u);
   mid::refineModel (first, *f.keypoints);
   expectPosesRelativeToTruth (f, first, 1e-4, 1e-5);
   for (const auto& instance : first.instances)

@@ -22,8 +22,9 @@ randomModel ()
   mid::ObjectModel model;
   for (int l = 0; l < 12; ++l) {
     pcl::PointNormal p;
-    p.getVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), unit (rng));
-    p.getNormalVector3fMap () = Eigen::Vector3f (unit (rng), unit (rng), 1.0f).normalized ();
+    p.getVector3fMap() = Eigen::Vector3f (unit (rng), unit (rng), unit (rng));
+    p.getNormalVector3fMap() =
+        Eigen::Vector3f (unit (rng), unit (rng), 1.0f).normalized();
     p.curvature = 0.0f;
     model.landmarks.push_back (p);
     for (int copy = 0; copy < 1 + l % 3; ++copy) {
@@ -45,7 +46,7 @@ protected:
   SetUp () override
   {
     path_ = folder_.file ("model.json");
-    ASSERT_TRUE (mid::saveObjectModel (path_, randomModel ()));
+    ASSERT_TRUE (mid::saveObjectModel (path_, randomModel()));
   }
 
   void
@@ -53,22 +54,22 @@ protected:
   {
     std::ifstream in (path_);
     std::stringstream text;
-    text << in.rdbuf ();
-    in.close ();
-    std::ofstream (path_) << std::regex_replace (text.str (), std::regex (from), to);
+    text << in.rdbuf();
+    in.close();
+    std::ofstream (path_) << std::regex_replace (text.str(), std::regex (from), to);
   }
 
   void
   expectRefused ()
   {
-    mid::ObjectModel model = randomModel ();
+    mid::ObjectModel model = randomModel();
     EXPECT_FALSE (mid::loadObjectModel (path_, model));
-    EXPECT_TRUE (model.landmarks.empty ());
-    EXPECT_TRUE (model.descriptors.empty ());
+    EXPECT_TRUE (model.landmarks.empty());
+    EXPECT_TRUE (model.descriptors.empty());
   }
 
   mid::test::TemporaryFolder folder_;
-  const fs::path& dir_ = folder_.path ();
+  const fs::path& dir_ = folder_.path();
   std::string path_;
 };
 
@@ -76,57 +77,61 @@ protected:
 
 TEST_F (ObjectModelIO, ReloadsIdentically)
 {
-  const mid::ObjectModel original = randomModel ();
+  const mid::ObjectModel original = randomModel();
   mid::ObjectModel loaded;
   ASSERT_TRUE (mid::loadObjectModel (path_, loaded));
-  ASSERT_EQ (loaded.landmarks.size (), original.landmarks.size ());
-  ASSERT_EQ (loaded.descriptors.size (), original.descriptors.size ());
+  ASSERT_EQ (loaded.landmarks.size(), original.landmarks.size());
+  ASSERT_EQ (loaded.descriptors.size(), original.descriptors.size());
   EXPECT_EQ (loaded.descriptor_landmarks, original.descriptor_landmarks);
-  for (std::size_t l = 0; l < original.landmarks.size (); ++l) {
-    EXPECT_EQ (loaded.landmarks[l].getVector3fMap (), original.landmarks[l].getVector3fMap ());
-    EXPECT_EQ (loaded.landmarks[l].getNormalVector3fMap (), original.landmarks[l].getNormalVector3fMap ());
+  for (std::size_t l = 0; l < original.landmarks.size(); ++l) {
+    EXPECT_EQ (loaded.landmarks[l].getVector3fMap(),
+               original.landmarks[l].getVector3fMap());
+    EXPECT_EQ (loaded.landmarks[l].getNormalVector3fMap(),
+               original.landmarks[l].getNormalVector3fMap());
   }
-  for (std::size_t d = 0; d < original.descriptors.size (); ++d)
-    EXPECT_TRUE (std::equal (original.descriptors[d].histogram, original.descriptors[d].histogram + 128,
+  for (std::size_t d = 0; d < original.descriptors.size(); ++d)
+    EXPECT_TRUE (std::equal (original.descriptors[d].histogram,
+                             original.descriptors[d].histogram + 128,
                              loaded.descriptors[d].histogram));
   EXPECT_NEAR (loaded.diameter, original.diameter, 1e-5f);
   EXPECT_TRUE (fs::exists (dir_ / "model.pcd"));
-  EXPECT_EQ (folder_.entries (), 2u);
+  EXPECT_EQ (folder_.entries(), 2u);
 }
 
 TEST_F (ObjectModelIO, RefusesMissingFiles)
 {
   fs::remove (dir_ / "model.pcd");
-  expectRefused ();
+  expectRefused();
   fs::remove (path_);
-  expectRefused ();
+  expectRefused();
 }
 
 TEST_F (ObjectModelIO, RefusesATruncatedDataFile)
 {
   fs::resize_file (dir_ / "model.pcd", fs::file_size (dir_ / "model.pcd") / 2);
-  expectRefused ();
+  expectRefused();
 }
 
 TEST_F (ObjectModelIO, RefusesAnotherVersionOrFormat)
 {
   rewriteJson ("\"version\": 1", "\"version\": 2");
-  expectRefused ();
+  expectRefused();
   rewriteJson ("\"version\": 2", "\"version\": 1");
   rewriteJson ("mid-object-model", "something-else");
-  expectRefused ();
+  expectRefused();
 }
 
 TEST_F (ObjectModelIO, RefusesATruncatedHeader)
 {
-  rewriteJson ("\"descriptors\": [0-9]+,\\s*\"diameter\": [0-9.e-]+", "");
-  expectRefused ();
+  rewriteJson (R"("descriptors": [0-9]+,\s*"diameter": [0-9.e-]+)", "");
+  expectRefused();
 }
 
 TEST (ObjectModelIOWrite, RefusesBadPaths)
 {
-  EXPECT_FALSE (mid::saveObjectModel ("/nonexistent_mid_folder/model.json", randomModel ()));
+  EXPECT_FALSE (
+      mid::saveObjectModel ("/nonexistent_mid_folder/model.json", randomModel()));
   const mid::test::TemporaryFolder folder;
-  EXPECT_FALSE (mid::saveObjectModel (folder.file ("model.txt"), randomModel ()));
-  EXPECT_EQ (folder.entries (), 0u);
+  EXPECT_FALSE (mid::saveObjectModel (folder.file ("model.txt"), randomModel()));
+  EXPECT_EQ (folder.entries(), 0u);
 }

@@ -1,3 +1,5 @@
+#include "surface_samples.h"
+
 #include <mid/simulation/scene_renderer.h>
 #include <mid/simulation/sensor_model.h>
 #include <mid/simulation/tabletop_scene.h>
@@ -17,35 +19,6 @@ using namespace mid::simulation;
 namespace {
 
 const std::string kTextureDir = std::string (MID_TEST_DATA_DIR) + "/textures";
-
-/** Points on a shape's surface (model frame): hits of rays cast at its centre from a sphere of
-  * directions around it.
-  */
-std::vector<Eigen::Vector3d>
-sampleSurface (const Shape& shape)
-{
-  std::vector<Eigen::Vector3d> points;
-  const double radius = 2.0 * shape.getBoundingRadius();
-  for (int i = 0; i < 40; ++i)
-    for (int j = 0; j < 80; ++j) {
-      const double polar = M_PI * (i + 0.5) / 40.0, azimuth = 2.0 * M_PI * j / 80.0;
-      const Eigen::Vector3d origin =
-          radius * Eigen::Vector3d (std::sin (polar) * std::cos (azimuth),
-                                    std::sin (polar) * std::sin (azimuth),
-                                    std::cos (polar));
-      // Aim near the centre, varied so that edges and faces are all sampled.
-      const Eigen::Vector3d target = 0.2 * radius *
-                                     Eigen::Vector3d (std::sin (3.1 * j),
-                                                      std::cos (1.7 * i),
-                                                      std::sin (2.3 * (i + j)));
-      const Eigen::Vector3d direction = target - origin;
-      SurfaceHit hit;
-      if (shape.intersect (
-              origin, direction, std::numeric_limits<double>::infinity(), hit))
-        points.emplace_back (origin + hit.t * direction);
-    }
-  return points;
-}
 
 RenderedFrame
 renderTabletop (const Scene& scene, int supersampling, double& seconds)
@@ -85,7 +58,7 @@ TEST (SimulationTabletop, ObjectsRestOnTheTableWithoutTouching)
 
   std::vector<std::vector<Eigen::Vector3d>> surfaces; // camera frame
   for (const SceneObject& object : objects) {
-    std::vector<Eigen::Vector3d> points = sampleSurface (*object.shape);
+    std::vector<Eigen::Vector3d> points = test::sampleSurface (*object.shape);
     ASSERT_GT (points.size(), 1000u);
     double lowest = std::numeric_limits<double>::max();
     for (Eigen::Vector3d& point : points) {

@@ -36,13 +36,13 @@ TEST (DiscoveryViewer, RefusesToRenderWithoutADisplay)
   const char* display = std::getenv ("DISPLAY");
   const std::string saved = display != nullptr ? display : "";
   ::unsetenv ("DISPLAY");
-  EXPECT_FALSE (mid::visualization::displayAvailable ());
+  EXPECT_FALSE (mid::visualization::displayAvailable());
   const mid::test::TemporaryFolder folder;
   mid::visualization::DiscoveryViewer<pcl::PointXYZRGB> viewer;
-  viewer.setInputCloud (mid::test::makeTwoCopiesScene ().cloud);
+  viewer.setInputCloud (mid::test::makeTwoCopiesScene().cloud);
   EXPECT_FALSE (viewer.saveScreenshot (folder.file ("shot.png"), 640, 480));
   EXPECT_FALSE (viewer.spin (640, 480));
   EXPECT_FALSE (std::filesystem::exists (folder.file ("shot.png")));
   if (display != nullptr)
-    ::setenv ("DISPLAY", saved.c_str (), 1);
+    ::setenv ("DISPLAY", saved.c_str(), 1);
 }

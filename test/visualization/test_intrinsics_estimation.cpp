@@ -11,7 +11,7 @@
 TEST (IntrinsicsEstimation, RecoversTheCameraOfADepthImage)
 {
   // makeTwoCopiesScene back-projects with fx = fy = 525, cx = 319.5, cy = 239.5.
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   mid::io::CameraIntrinsics intrinsics;
   ASSERT_TRUE (mid::visualization::estimateIntrinsics (*scene.cloud, intrinsics));
   EXPECT_NEAR (intrinsics.fx, 525.0, 1e-2);
@@ -24,14 +24,14 @@ TEST (IntrinsicsEstimation, RefusesCloudsWithoutACamera)
 {
   mid::io::CameraIntrinsics intrinsics;
   intrinsics.fx = 1.0;
-  EXPECT_FALSE (mid::visualization::estimateIntrinsics (pcl::PointCloud<pcl::PointXYZRGBA> (100, 1),
-                                                        intrinsics));
+  EXPECT_FALSE (mid::visualization::estimateIntrinsics (
+      pcl::PointCloud<pcl::PointXYZRGBA> (100, 1), intrinsics));
   EXPECT_EQ (intrinsics.fx, 0.0);
 
-  auto cloud = mid::test::makeTwoCopiesScene ().cloud;
+  auto cloud = mid::test::makeTwoCopiesScene().cloud;
   for (auto& point : *cloud)
-    point.z = std::numeric_limits<float>::quiet_NaN ();
+    point.z = std::numeric_limits<float>::quiet_NaN();
   EXPECT_FALSE (mid::visualization::estimateIntrinsics (*cloud, intrinsics));
-  cloud->at (10, 10).getVector3fMap () = Eigen::Vector3f (0.1f, 0.1f, 1.0f);
+  cloud->at (10, 10).getVector3fMap() = Eigen::Vector3f (0.1f, 0.1f, 1.0f);
   EXPECT_FALSE (mid::visualization::estimateIntrinsics (*cloud, intrinsics));
 }

@@ -9,7 +9,8 @@
 namespace {
 
 int
-distance (const mid::visualization::ObjectColor& a, const mid::visualization::ObjectColor& b)
+distance (const mid::visualization::ObjectColor& a,
+          const mid::visualization::ObjectColor& b)
 {
   return std::abs (a.r - b.r) + std::abs (a.g - b.g) + std::abs (a.b - b.b);
 }

@@ -26,8 +26,8 @@ struct Box
 Box
 boxOf (const mid::DiscoveryResult& result, const mid::ModelInstance& instance)
 {
-  float u_min = std::numeric_limits<float>::max (), v_min = u_min;
-  float u_max = std::numeric_limits<float>::lowest (), v_max = u_max;
+  float u_min = std::numeric_limits<float>::max(), v_min = u_min;
+  float u_max = std::numeric_limits<float>::lowest(), v_max = u_max;
   for (const auto k : instance.keypoints) {
     const auto& keypoint = result.image_keypoints[static_cast<std::size_t> (k)];
     u_min = std::min (u_min, keypoint.u);
@@ -50,12 +50,12 @@ protected:
   void
   SetUp () override
   {
-    scene_ = mid::test::makeTwoCopiesScene ();
+    scene_ = mid::test::makeTwoCopiesScene();
     mid::MultiInstanceDiscovery<pcl::PointXYZRGB> discovery;
     discovery.setInputCloud (scene_.cloud);
     ASSERT_TRUE (discovery.discover (result_));
-    ASSERT_EQ (result_.models.size (), 1u);
-    ASSERT_EQ (result_.models[0].instances.size (), 2u);
+    ASSERT_EQ (result_.models.size(), 1u);
+    ASSERT_EQ (result_.models[0].instances.size(), 2u);
   }
 
   mid::test::TwoCopiesScene scene_;
@@ -68,13 +68,13 @@ TEST_F (Overlay, DrawsEachInstanceBoxInItsObjectColorAndKeepsTheScene)
 {
   cv::Mat image;
   ASSERT_TRUE (mid::visualization::renderOverlay (*scene_.cloud, result_, image));
-  ASSERT_EQ (image.type (), CV_8UC3);
+  ASSERT_EQ (image.type(), CV_8UC3);
   ASSERT_EQ (image.cols, 640);
   ASSERT_EQ (image.rows, 480);
 
   // Where the overlay may draw: each box, its keypoint circles and its label, with a margin.
-  cv::Mat drawn (image.size (), CV_8UC1, cv::Scalar (0));
-  for (std::size_t m = 0; m < result_.models.size (); ++m) {
+  cv::Mat drawn (image.size(), CV_8UC1, cv::Scalar (0));
+  for (std::size_t m = 0; m < result_.models.size(); ++m) {
     const cv::Vec3b color = bgr (mid::visualization::objectColor (m));
     for (const auto& instance : result_.models[m].instances) {
       const Box box = boxOf (result_, instance);
@@ -89,8 +89,10 @@ TEST_F (Overlay, DrawsEachInstanceBoxInItsObjectColorAndKeepsTheScene)
         EXPECT_EQ (image.at<cv::Vec3b> (v, box.u_max), color) << "right edge, v " << v;
       }
       constexpr int kMargin = 30;
-      cv::rectangle (drawn, cv::Point (box.u_min - kMargin, box.v_min - kMargin),
-                     cv::Point (box.u_max + kMargin, box.v_max + kMargin), cv::Scalar (255),
+      cv::rectangle (drawn,
+                     cv::Point (box.u_min - kMargin, box.v_min - kMargin),
+                     cv::Point (box.u_max + kMargin, box.v_max + kMargin),
+                     cv::Scalar (255),
                      cv::FILLED);
     }
   }
@@ -100,7 +102,9 @@ TEST_F (Overlay, DrawsEachInstanceBoxInItsObjectColorAndKeepsTheScene)
       if (drawn.at<uchar> (v, u) != 0)
         continue;
       const auto& point = scene_.cloud->at (u, v);
-      (image.at<cv::Vec3b> (v, u) == cv::Vec3b (point.b, point.g, point.r) ? kept : changed) += 1;
+      (image.at<cv::Vec3b> (v, u) == cv::Vec3b (point.b, point.g, point.r) ? kept
+                                                                           : changed) +=
+          1;
     }
   EXPECT_EQ (changed, 0u);
   EXPECT_GT (kept, 640u * 480u / 2);
@@ -109,13 +113,15 @@ TEST_F (Overlay, DrawsEachInstanceBoxInItsObjectColorAndKeepsTheScene)
 TEST_F (Overlay, SavesAPng)
 {
   const mid::test::TemporaryFolder folder;
-  ASSERT_TRUE (mid::visualization::saveOverlay (folder.file ("overlay.png"), *scene_.cloud, result_));
-  cv::Mat expected, written = cv::imread (folder.file ("overlay.png"), cv::IMREAD_COLOR);
+  ASSERT_TRUE (mid::visualization::saveOverlay (
+      folder.file ("overlay.png"), *scene_.cloud, result_));
+  cv::Mat expected,
+      written = cv::imread (folder.file ("overlay.png"), cv::IMREAD_COLOR);
   ASSERT_TRUE (mid::visualization::renderOverlay (*scene_.cloud, result_, expected));
-  ASSERT_EQ (written.size (), expected.size ());
+  ASSERT_EQ (written.size(), expected.size());
   EXPECT_EQ (cv::norm (written, expected, cv::NORM_INF), 0.0);
-  EXPECT_FALSE (mid::visualization::saveOverlay (folder.file ("missing/overlay.png"),
-                                                 *scene_.cloud, result_));
+  EXPECT_FALSE (mid::visualization::saveOverlay (
+      folder.file ("missing/overlay.png"), *scene_.cloud, result_));
 }
 
 TEST_F (Overlay, RefusesAnUnorganizedCloudOrAKeypointWithoutPixel)
@@ -123,21 +129,22 @@ TEST_F (Overlay, RefusesAnUnorganizedCloudOrAKeypointWithoutPixel)
   cv::Mat image (2, 2, CV_8UC3);
   pcl::PointCloud<pcl::PointXYZRGB> flat (100, 1);
   EXPECT_FALSE (mid::visualization::renderOverlay (flat, result_, image));
-  EXPECT_TRUE (image.empty ());
+  EXPECT_TRUE (image.empty());
 
   mid::DiscoveryResult broken = result_;
   broken.models[0].instances[1].keypoints.push_back (
-      static_cast<pcl::index_t> (broken.image_keypoints.size ()));
+      static_cast<pcl::index_t> (broken.image_keypoints.size()));
   image = cv::Mat (2, 2, CV_8UC3);
   EXPECT_FALSE (mid::visualization::renderOverlay (*scene_.cloud, broken, image));
-  EXPECT_TRUE (image.empty ());
+  EXPECT_TRUE (image.empty());
 }
 
 TEST (OverlayWithoutObjects, IsTheColorImage)
 {
-  const auto scene = mid::test::makeTwoCopiesScene ();
+  const auto scene = mid::test::makeTwoCopiesScene();
   cv::Mat image;
-  ASSERT_TRUE (mid::visualization::renderOverlay (*scene.cloud, mid::DiscoveryResult (), image));
+  ASSERT_TRUE (
+      mid::visualization::renderOverlay (*scene.cloud, mid::DiscoveryResult(), image));
   for (int v = 0; v < image.rows; v += 7)
     for (int u = 0; u < image.cols; u += 7) {
       const auto& point = scene.cloud->at (u, v);

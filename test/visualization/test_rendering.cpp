@@ -24,19 +24,27 @@ namespace {
 constexpr double kFocal = 525.0, kCx = 319.5, kCy = 239.5;
 constexpr int kImageWidth = 640, kImageHeight = 480;
 
-/** True if a pixel within `radius` of `at` has `color` (BGR, up to a small difference). */
+/** True if two colors differ by at most 30 (sum over the channels). */
 bool
-colorNear (const cv::Mat& image, const cv::Point2d& at, const cv::Vec3b& color, int radius)
+similar (const cv::Vec3b& a, const cv::Vec3b& b)
+{
+  return std::abs (a[0] - b[0]) + std::abs (a[1] - b[1]) + std::abs (a[2] - b[2]) <= 30;
+}
+
+/** True if a pixel within `radius` of `at` has (about) `color`, BGR. */
+bool
+colorNear (const cv::Mat& image,
+           const cv::Point2d& at,
+           const cv::Vec3b& color,
+           int radius)
 {
   const int u0 = cvRound (at.x), v0 = cvRound (at.y);
-  for (int v = std::max (0, v0 - radius); v <= std::min (image.rows - 1, v0 + radius); ++v)
-    for (int u = std::max (0, u0 - radius); u <= std::min (image.cols - 1, u0 + radius); ++u) {
-      const cv::Vec3b& pixel = image.at<cv::Vec3b> (v, u);
-      if (std::abs (pixel[0] - color[0]) + std::abs (pixel[1] - color[1]) +
-              std::abs (pixel[2] - color[2]) <=
-          30)
+  for (int v = std::max (0, v0 - radius); v <= std::min (image.rows - 1, v0 + radius);
+       ++v)
+    for (int u = std::max (0, u0 - radius); u <= std::min (image.cols - 1, u0 + radius);
+         ++u)
+      if (similar (image.at<cv::Vec3b> (v, u), color))
         return true;
-    }
   return false;
 }
 
@@ -45,21 +53,24 @@ colorNear (const cv::Mat& image, const cv::Point2d& at, const cv::Vec3b& color, 
   * left, the camera's image fitted in it whole and centred.
   */
 double
-shareOfLandmarksSeen (const cv::Mat& image, const mid::DiscoveryResult& result, int scene_width)
+shareOfLandmarksSeen (const cv::Mat& image,
+                      const mid::DiscoveryResult& result,
+                      int scene_width)
 {
   const double scale = std::min (static_cast<double> (scene_width) / kImageWidth,
                                  static_cast<double> (image.rows) / kImageHeight);
   const double offset_u = 0.5 * (scene_width - scale * kImageWidth);
   const double offset_v = 0.5 * (image.rows - scale * kImageHeight);
   std::size_t seen = 0, total = 0;
-  for (std::size_t m = 0; m < result.models.size (); ++m) {
+  for (std::size_t m = 0; m < result.models.size(); ++m) {
     const auto color = mid::visualization::objectColor (m);
     const cv::Vec3b bgr (color.b, color.g, color.r);
     for (const auto& instance : result.models[m].instances)
       for (const auto& landmark : result.models[m].landmarks) {
-        const Eigen::Vector3f p = instance.pose.topLeftCorner<3, 3> () * landmark.getVector3fMap () +
-                                  instance.pose.topRightCorner<3, 1> ();
-        const double u = kFocal * p.x () / p.z () + kCx, v = kFocal * p.y () / p.z () + kCy;
+        const Eigen::Vector3f p =
+            instance.pose.topLeftCorner<3, 3>() * landmark.getVector3fMap() +
+            instance.pose.topRightCorner<3, 1>();
+        const double u = kFocal * p.x() / p.z() + kCx, v = kFocal * p.y() / p.z() + kCy;
         const cv::Point2d pixel (offset_u + (u + 0.5) * scale - 0.5,
                                  offset_v + (v + 0.5) * scale - 0.5);
         seen += colorNear (image, pixel, bgr, 1) ? 1 : 0;
@@ -69,20 +80,14 @@ shareOfLandmarksSeen (const cv::Mat& image, const mid::DiscoveryResult& result, 
   return total > 0 ? static_cast<double> (seen) / static_cast<double> (total) : 0.0;
 }
 
-/** Pixels of the given color (BGR, up to a small difference) in a column range. */
+/** Pixels of (about) the given color, BGR, in a column range. */
 std::size_t
 countColor (const cv::Mat& image, const cv::Vec3b& color, int u_begin, int u_end)
 {
   std::size_t count = 0;
   for (int v = 0; v < image.rows; ++v)
-    for (int u = u_begin; u < u_end; ++u) {
-      const cv::Vec3b& pixel = image.at<cv::Vec3b> (v, u);
-      count += std::abs (pixel[0] - color[0]) + std::abs (pixel[1] - color[1]) +
-                           std::abs (pixel[2] - color[2]) <=
-                       30
-                   ? 1
-                   : 0;
-    }
+    for (int u = u_begin; u < u_end; ++u)
+      count += similar (image.at<cv::Vec3b> (v, u), color) ? 1 : 0;
   return count;
 }
 
@@ -110,12 +115,12 @@ protected:
   SetUp () override
   {
     ASSERT_NE (std::getenv ("DISPLAY"), nullptr) << "run this test under xvfb-run -a";
-    scene_ = mid::test::makeTwoCopiesScene ();
+    scene_ = mid::test::makeTwoCopiesScene();
     mid::MultiInstanceDiscovery<pcl::PointXYZRGB> discovery;
     discovery.setInputCloud (scene_.cloud);
     ASSERT_TRUE (discovery.discover (result_));
-    ASSERT_EQ (result_.models.size (), 1u);
-    ASSERT_EQ (result_.models[0].instances.size (), 2u);
+    ASSERT_EQ (result_.models.size(), 1u);
+    ASSERT_EQ (result_.models[0].instances.size(), 2u);
     viewer_.setInputCloud (scene_.cloud);
     viewer_.setResult (result_);
   }
@@ -153,8 +158,8 @@ TEST_F (Rendering, ModelPanelOnTheRightLeavesTheCameraViewFitted)
   const cv::Mat image = screenshot (800, 480);
   ASSERT_EQ (image.cols, 800);
   expectNotBlank (image);
-  const int scene_width =
-      static_cast<int> (std::lround (800 * (1.0 - mid::visualization::MODEL_PANEL_WIDTH)));
+  const int scene_width = static_cast<int> (
+      std::lround (800 * (1.0 - mid::visualization::MODEL_PANEL_WIDTH)));
   EXPECT_GT (shareOfLandmarksSeen (image, result_, scene_width), 0.9);
   EXPECT_GT (countColor (image, objectBgr (0), scene_width, image.cols), 50u);
 }
@@ -184,8 +189,10 @@ TEST (RenderingApp, ScreenshotOfTheDiscoveryApp)
 {
   ASSERT_NE (std::getenv ("DISPLAY"), nullptr) << "run this test under xvfb-run -a";
   const mid::test::TemporaryFolder folder;
-  const auto scene = mid::test::makeTwoCopiesScene ();
-  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder.file ("scene.pcd"), *scene.cloud), 0);
+  const auto scene = mid::test::makeTwoCopiesScene();
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("scene.pcd"), *scene.cloud),
+      0);
   const auto run = mid::test::runCommand (std::string (MID_DISCOVERY_APP) + " " +
                                           folder.file ("scene.pcd") + " -screenshot " +
                                           folder.file ("shot.png") + " -overlay " +
@@ -195,27 +202,28 @@ TEST (RenderingApp, ScreenshotOfTheDiscoveryApp)
   ASSERT_EQ (image.cols, 640); // the default size
   ASSERT_EQ (image.rows, 480);
   expectNotBlank (image);
-  EXPECT_EQ (cv::imread (folder.file ("overlay.png")).size (), cv::Size (640, 480));
-  EXPECT_EQ (folder.entries (), 3u); // scene, screenshot, overlay: nothing partial left
+  EXPECT_EQ (cv::imread (folder.file ("overlay.png")).size(), cv::Size (640, 480));
+  EXPECT_EQ (folder.entries(), 3u); // scene, screenshot, overlay: nothing partial left
 
   // The app's result, recomputed here: the pipeline is deterministic.
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>>();
   ASSERT_TRUE (mid::io::loadOrganizedPCD (folder.file ("scene.pcd"), *cloud));
   mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
   discovery.setInputCloud (cloud);
   mid::DiscoveryResult result;
   ASSERT_TRUE (discovery.discover (result));
-  ASSERT_EQ (result.models.size (), 1u);
-  const int scene_width =
-      static_cast<int> (std::lround (640 * (1.0 - mid::visualization::MODEL_PANEL_WIDTH)));
+  ASSERT_EQ (result.models.size(), 1u);
+  const int scene_width = static_cast<int> (
+      std::lround (640 * (1.0 - mid::visualization::MODEL_PANEL_WIDTH)));
   EXPECT_GT (shareOfLandmarksSeen (image, result, scene_width), 0.9);
   EXPECT_GT (countColor (image, objectBgr (0), scene_width, image.cols), 50u);
 
   const auto sized = mid::test::runCommand (
-      std::string (MID_DISCOVERY_APP) + " " + folder.file ("scene.pcd") + " -screenshot " +
-      folder.file ("big.png") + " -size 1024 600 -viewpoint 0.3 -0.2 0.1 -draw_matches");
+      std::string (MID_DISCOVERY_APP) + " " + folder.file ("scene.pcd") +
+      " -screenshot " + folder.file ("big.png") +
+      " -size 1024 600 -viewpoint 0.3 -0.2 0.1 -draw_matches");
   ASSERT_EQ (sized.exit_code, 0) << sized.output;
   const cv::Mat big = cv::imread (folder.file ("big.png"), cv::IMREAD_COLOR);
-  EXPECT_EQ (big.size (), cv::Size (1024, 600));
+  EXPECT_EQ (big.size(), cv::Size (1024, 600));
   expectNotBlank (big);
 }

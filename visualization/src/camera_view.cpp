@@ -1,11 +1,10 @@
 #include <mid/visualization/camera_view.h>
 
 #include <pcl/console/print.h>
-
 #include <vtkCamera.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <vtkRenderWindow.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +16,8 @@ ImageFit
 fitImage (int image_width, int image_height, int viewport_width, int viewport_height)
 {
   ImageFit fit;
-  if (image_width <= 0 || image_height <= 0 || viewport_width <= 0 || viewport_height <= 0) {
+  if (image_width <= 0 || image_height <= 0 || viewport_width <= 0 ||
+      viewport_height <= 0) {
     fit.scale = 0.0;
     return fit;
   }
@@ -35,9 +35,9 @@ setCameraView (pcl::visualization::PCLVisualizer& viewer,
                int image_height,
                int viewport)
 {
-  vtkRendererCollection* renderers = viewer.getRendererCollection ();
+  vtkRendererCollection* renderers = viewer.getRendererCollection();
   vtkRenderer* renderer =
-      viewport >= 0 && viewport < renderers->GetNumberOfItems ()
+      viewport >= 0 && viewport < renderers->GetNumberOfItems()
           ? vtkRenderer::SafeDownCast (renderers->GetItemAsObject (viewport))
           : nullptr;
   if (renderer == nullptr) {
@@ -45,15 +45,23 @@ setCameraView (pcl::visualization::PCLVisualizer& viewer,
     return false;
   }
   // The viewport's size in pixels, from the window's size (also before the window is shown).
-  const int* window_size = viewer.getRenderWindow ()->GetSize ();
-  const double* extent = renderer->GetViewport ();
-  const int width = static_cast<int> (std::lround ((extent[2] - extent[0]) * window_size[0]));
-  const int height = static_cast<int> (std::lround ((extent[3] - extent[1]) * window_size[1]));
+  const int* window_size = viewer.getRenderWindow()->GetSize();
+  const double* extent = renderer->GetViewport();
+  const int width =
+      static_cast<int> (std::lround ((extent[2] - extent[0]) * window_size[0]));
+  const int height =
+      static_cast<int> (std::lround ((extent[3] - extent[1]) * window_size[1]));
   const ImageFit fit = fitImage (image_width, image_height, width, height);
   if (!(fit.scale > 0.0) || !(intrinsics.fx > 0.0) || !(intrinsics.fy > 0.0)) {
-    PCL_ERROR ("[mid::visualization::setCameraView] unusable sizes or focal lengths (image %d x "
-               "%d, viewport %d x %d, fx %g, fy %g)\n", image_width, image_height, width, height,
-               intrinsics.fx, intrinsics.fy);
+    PCL_ERROR ("[mid::visualization::setCameraView] unusable sizes or focal lengths "
+               "(image %d x "
+               "%d, viewport %d x %d, fx %g, fy %g)\n",
+               image_width,
+               image_height,
+               width,
+               height,
+               intrinsics.fx,
+               intrinsics.fy);
     return false;
   }
   // VTK's perspective maps a point to normalized viewport coordinates
@@ -63,16 +71,18 @@ setCameraView (pcl::visualization::PCLVisualizer& viewer,
   //   offset_u + (fx * x / z + cx + 0.5) * scale, offset_v + (fy * y / z + cy + 0.5) * scale.
   // Equating both for every point gives the angle and the window centre below.
   const double tangent = height / (2.0 * fit.scale * intrinsics.fy);
-  const double center_x = 1.0 - 2.0 * (fit.offset_u + (intrinsics.cx + 0.5) * fit.scale) / width;
-  const double center_y = 2.0 * (fit.offset_v + (intrinsics.cy + 0.5) * fit.scale) / height - 1.0;
-  vtkCamera* camera = renderer->GetActiveCamera ();
+  const double center_x =
+      1.0 - 2.0 * (fit.offset_u + (intrinsics.cx + 0.5) * fit.scale) / width;
+  const double center_y =
+      2.0 * (fit.offset_v + (intrinsics.cy + 0.5) * fit.scale) / height - 1.0;
+  vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition (0.0, 0.0, 0.0);
   camera->SetFocalPoint (0.0, 0.0, 1.0);
   camera->SetViewUp (0.0, -1.0, 0.0);
   camera->SetUseHorizontalViewAngle (0);
   camera->SetViewAngle (2.0 * std::atan (tangent) * 180.0 / M_PI);
   camera->SetWindowCenter (center_x, center_y);
-  renderer->ResetCameraClippingRange ();
+  renderer->ResetCameraClippingRange();
   return true;
 }
 

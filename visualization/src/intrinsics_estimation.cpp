@@ -3,8 +3,8 @@
 #include <pcl/point_types.h>
 
 template bool
-mid::visualization::estimateIntrinsics<pcl::PointXYZRGB> (const pcl::PointCloud<pcl::PointXYZRGB>&,
-                                                          mid::io::CameraIntrinsics&);
+mid::visualization::estimateIntrinsics<pcl::PointXYZRGB> (
+    const pcl::PointCloud<pcl::PointXYZRGB>&, mid::io::CameraIntrinsics&);
 template bool
 mid::visualization::estimateIntrinsics<pcl::PointXYZRGBA> (
     const pcl::PointCloud<pcl::PointXYZRGBA>&, mid::io::CameraIntrinsics&);

@@ -17,7 +17,7 @@ constexpr std::array<ObjectColor, OBJECT_PALETTE_SIZE> kPalette{{{0, 190, 255},
                                                                  {255, 40, 40},
                                                                  {150, 90, 255},
                                                                  {0, 230, 170},
-                                                                 {255, 140, 0},
+                                                                 {255, 120, 0},
                                                                  {180, 255, 60},
                                                                  {255, 120, 150}}};
 
@@ -40,10 +40,11 @@ hueColor (double hue)
 ObjectColor
 objectColor (std::size_t id)
 {
-  if (id < kPalette.size ())
+  if (id < kPalette.size())
     return kPalette[id];
   constexpr double kGoldenAngle = 137.50776405003785;
-  return hueColor (std::fmod (static_cast<double> (id - kPalette.size ()) * kGoldenAngle, 360.0));
+  return hueColor (
+      std::fmod (static_cast<double> (id - kPalette.size()) * kGoldenAngle, 360.0));
 }
 
 } // namespace visualization

@@ -38,9 +38,15 @@ public:
     */
   ///@{
   void
-  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints) { keypoints_ = keypoints; }
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
   const KeypointCloud::ConstPtr&
-  getInputKeypoints () const { return keypoints_; }
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
   ///@}
 
   /** \brief One descriptor per keypoint, in the keypoints' order (match() fails if the counts
@@ -48,9 +54,15 @@ public:
     */
   ///@{
   void
-  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors)
+  {
+    descriptors_ = descriptors;
+  }
   const SIFTDescriptorCloud::ConstPtr&
-  getInputDescriptors () const { return descriptors_; }
+  getInputDescriptors () const
+  {
+    return descriptors_;
+  }
   ///@}
 
   /** \brief Largest L2 descriptor distance of a kept match (the paper's threshold that turns N
@@ -59,9 +71,15 @@ public:
     */
   ///@{
   void
-  setMaxDescriptorDistance (float distance) { max_descriptor_distance_ = distance; }
+  setMaxDescriptorDistance (float distance)
+  {
+    max_descriptor_distance_ = distance;
+  }
   float
-  getMaxDescriptorDistance () const { return max_descriptor_distance_; }
+  getMaxDescriptorDistance () const
+  {
+    return max_descriptor_distance_;
+  }
   ///@}
 
   /** \brief Candidates closer than this to the query keypoint in 3D are skipped (metres).
@@ -69,9 +87,15 @@ public:
     */
   ///@{
   void
-  setMinKeypointDistance (float distance) { min_keypoint_distance_ = distance; }
+  setMinKeypointDistance (float distance)
+  {
+    min_keypoint_distance_ = distance;
+  }
   float
-  getMinKeypointDistance () const { return min_keypoint_distance_; }
+  getMinKeypointDistance () const
+  {
+    return min_keypoint_distance_;
+  }
   ///@}
 
   /** \brief Lowe's ratio test: keep a match only if best < ratio * second best. A ratio of 1
@@ -79,17 +103,29 @@ public:
     */
   ///@{
   void
-  setMaxDistanceRatio (float ratio) { max_distance_ratio_ = ratio; }
+  setMaxDistanceRatio (float ratio)
+  {
+    max_distance_ratio_ = ratio;
+  }
   float
-  getMaxDistanceRatio () const { return max_distance_ratio_; }
+  getMaxDistanceRatio () const
+  {
+    return max_distance_ratio_;
+  }
   ///@}
 
   /** \brief Keep i->j only if j's best match is i. Default false. */
   ///@{
   void
-  setMutualCheck (bool mutual_check) { mutual_check_ = mutual_check; }
+  setMutualCheck (bool mutual_check)
+  {
+    mutual_check_ = mutual_check;
+  }
   bool
-  getMutualCheck () const { return mutual_check_; }
+  getMutualCheck () const
+  {
+    return mutual_check_;
+  }
   ///@}
 
   /** \brief Match every keypoint to its most similar other keypoint.

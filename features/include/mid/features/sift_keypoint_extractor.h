@@ -44,16 +44,22 @@ public:
   /** \brief The input: an organized cloud with x, y, z (metres) and r, g, b. */
   using PointCloud = pcl::PointCloud<PointT>;
 
-  SIFTKeypointExtractor () = default;
+  SIFTKeypointExtractor() = default;
 
   /** \brief Keep at most this many keypoints (the strongest); 0 keeps all. Default 0; must be
     * >= 0 (compute() fails otherwise).
     */
   ///@{
   void
-  setMaxKeypoints (int max_keypoints) { max_keypoints_ = max_keypoints; }
+  setMaxKeypoints (int max_keypoints)
+  {
+    max_keypoints_ = max_keypoints;
+  }
   int
-  getMaxKeypoints () const { return max_keypoints_; }
+  getMaxKeypoints () const
+  {
+    return max_keypoints_;
+  }
   ///@}
 
   /** \brief SIFT layers per octave (OpenCV nOctaveLayers). Default 3; must be >= 1 (compute()
@@ -61,9 +67,15 @@ public:
     */
   ///@{
   void
-  setOctaveLayers (int octave_layers) { octave_layers_ = octave_layers; }
+  setOctaveLayers (int octave_layers)
+  {
+    octave_layers_ = octave_layers;
+  }
   int
-  getOctaveLayers () const { return octave_layers_; }
+  getOctaveLayers () const
+  {
+    return octave_layers_;
+  }
   ///@}
 
   /** \brief SIFT contrast threshold: larger gives fewer keypoints in flat regions. Default 0.04;
@@ -71,9 +83,15 @@ public:
     */
   ///@{
   void
-  setContrastThreshold (double contrast_threshold) { contrast_threshold_ = contrast_threshold; }
+  setContrastThreshold (double contrast_threshold)
+  {
+    contrast_threshold_ = contrast_threshold;
+  }
   double
-  getContrastThreshold () const { return contrast_threshold_; }
+  getContrastThreshold () const
+  {
+    return contrast_threshold_;
+  }
   ///@}
 
   /** \brief SIFT edge threshold: larger keeps more edge-like keypoints. Default 10; must be > 0
@@ -81,9 +99,15 @@ public:
     */
   ///@{
   void
-  setEdgeThreshold (double edge_threshold) { edge_threshold_ = edge_threshold; }
+  setEdgeThreshold (double edge_threshold)
+  {
+    edge_threshold_ = edge_threshold;
+  }
   double
-  getEdgeThreshold () const { return edge_threshold_; }
+  getEdgeThreshold () const
+  {
+    return edge_threshold_;
+  }
   ///@}
 
   /** \brief Sigma of the Gaussian at octave 0, in pixels. Default 1.6; must be > 0 (compute()
@@ -91,9 +115,15 @@ public:
     */
   ///@{
   void
-  setSigma (double sigma) { sigma_ = sigma; }
+  setSigma (double sigma)
+  {
+    sigma_ = sigma;
+  }
   double
-  getSigma () const { return sigma_; }
+  getSigma () const
+  {
+    return sigma_;
+  }
   ///@}
 
   /** \brief Radius (metres) of the neighbourhood a keypoint's normal is fitted to. Default 0.015;
@@ -101,9 +131,15 @@ public:
     */
   ///@{
   void
-  setNormalRadius (float normal_radius) { normal_radius_ = normal_radius; }
+  setNormalRadius (float normal_radius)
+  {
+    normal_radius_ = normal_radius;
+  }
   float
-  getNormalRadius () const { return normal_radius_; }
+  getNormalRadius () const
+  {
+    return normal_radius_;
+  }
   ///@}
 
   /** \brief Fewest neighbours (keypoint included) a normal is fitted to; keypoints with fewer are
@@ -111,9 +147,15 @@ public:
     */
   ///@{
   void
-  setMinNormalNeighbors (int min_normal_neighbors) { min_normal_neighbors_ = min_normal_neighbors; }
+  setMinNormalNeighbors (int min_normal_neighbors)
+  {
+    min_normal_neighbors_ = min_normal_neighbors;
+  }
   int
-  getMinNormalNeighbors () const { return min_normal_neighbors_; }
+  getMinNormalNeighbors () const
+  {
+    return min_normal_neighbors_;
+  }
   ///@}
 
   /** \brief Detect, describe and lift the keypoints of the input cloud's image.
@@ -127,7 +169,10 @@ public:
 
   /** \brief Where the keypoints of the last compute() lie in the image, in the output order. */
   const ImageKeypoints&
-  getImageKeypoints () const { return image_keypoints_; }
+  getImageKeypoints () const
+  {
+    return image_keypoints_;
+  }
 
 protected:
   using pcl::PCLBase<PointT>::input_;

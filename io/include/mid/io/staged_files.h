@@ -20,13 +20,13 @@ namespace io {
 class StagedFiles
 {
 public:
-  StagedFiles () = default;
+  StagedFiles() = default;
   StagedFiles (const StagedFiles&) = delete;
   StagedFiles&
   operator= (const StagedFiles&) = delete;
 
   /** \brief Removes the temporary files unless commit() succeeded. */
-  ~StagedFiles ();
+  ~StagedFiles();
 
   /** \brief Register a destination and get the temporary path to write it to: same folder,
     * same extension (so that writers choosing the format by extension still work), e.g.

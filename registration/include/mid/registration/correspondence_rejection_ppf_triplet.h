@@ -49,7 +49,8 @@ namespace mid {
   * Discovery and Modeling Using Single RGB-D Images Containing Multiple Object Instances",
   * 3DV 2017.
   */
-class CorrespondenceRejectorPPFTriplet : public pcl::registration::CorrespondenceRejector
+class CorrespondenceRejectorPPFTriplet
+: public pcl::registration::CorrespondenceRejector
 {
 public:
   /** \brief Shared pointer to a rejector. */
@@ -57,7 +58,10 @@ public:
   /** \brief Shared pointer to a const rejector. */
   using ConstPtr = std::shared_ptr<const CorrespondenceRejectorPPFTriplet>;
 
-  CorrespondenceRejectorPPFTriplet () { rejection_name_ = "CorrespondenceRejectorPPFTriplet"; }
+  CorrespondenceRejectorPPFTriplet()
+  {
+    rejection_name_ = "CorrespondenceRejectorPPFTriplet";
+  }
 
   /** \brief Filter the matches; see the class description.
     * \param[in] original_correspondences the matches (index_query into the source keypoints,
@@ -66,12 +70,16 @@ public:
     * a PCL_ERROR) if the input is unusable or a parameter is out of its range
     */
   void
-  getRemainingCorrespondences (const pcl::Correspondences& original_correspondences,
-                               pcl::Correspondences& remaining_correspondences) override;
+  getRemainingCorrespondences (
+      const pcl::Correspondences& original_correspondences,
+      pcl::Correspondences& remaining_correspondences) override;
 
   /** \brief The accepted triplets of the last call, with one rigid pose each. */
   const TripletMatches&
-  getTripletMatches () const { return triplets_; }
+  getTripletMatches () const
+  {
+    return triplets_;
+  }
 
   /** \brief Source keypoints: positions (metres) and unit normals. Required: without them, or
     * with a keypoint that a match uses lacking a finite position and unit normal,
@@ -79,9 +87,15 @@ public:
     */
   ///@{
   void
-  setInputSource (const KeypointCloud::ConstPtr& source) { source_ = source; }
+  setInputSource (const KeypointCloud::ConstPtr& source)
+  {
+    source_ = source;
+  }
   const KeypointCloud::ConstPtr&
-  getInputSource () const { return source_; }
+  getInputSource () const
+  {
+    return source_;
+  }
   ///@}
 
   /** \brief Target keypoints; leave unset (or set the same cloud) for matches inside one frame,
@@ -89,9 +103,15 @@ public:
     */
   ///@{
   void
-  setInputTarget (const KeypointCloud::ConstPtr& target) { target_ = target; }
+  setInputTarget (const KeypointCloud::ConstPtr& target)
+  {
+    target_ = target;
+  }
   const KeypointCloud::ConstPtr&
-  getInputTarget () const { return target_; }
+  getInputTarget () const
+  {
+    return target_;
+  }
   ///@}
 
   /** \brief PCL registration hook: true, the source positions are needed. Through the hooks,
@@ -99,7 +119,10 @@ public:
     * normal_z), e.g. from pcl::IterativeClosestPoint.
     */
   bool
-  requiresSourcePoints () const override { return true; }
+  requiresSourcePoints () const override
+  {
+    return true;
+  }
   /** \brief PCL registration hook: set the source keypoints from a PCLPointCloud2.
     * \param[in] cloud2 fields x, y, z (metres), and the normals if it has them; without them,
     * the normals of the previous source are kept if it has the same size
@@ -108,7 +131,10 @@ public:
   setSourcePoints (pcl::PCLPointCloud2::ConstPtr cloud2) override;
   /** \brief PCL registration hook: true, the source normals are needed. */
   bool
-  requiresSourceNormals () const override { return true; }
+  requiresSourceNormals () const override
+  {
+    return true;
+  }
   /** \brief PCL registration hook: set the normals of the source keypoints already given.
     * \param[in] cloud2 fields normal_x, normal_y, normal_z (unit length); ignored if it has no
     * normals or its size differs from the source's
@@ -117,7 +143,10 @@ public:
   setSourceNormals (pcl::PCLPointCloud2::ConstPtr cloud2) override;
   /** \brief PCL registration hook: true, the target positions are needed. */
   bool
-  requiresTargetPoints () const override { return true; }
+  requiresTargetPoints () const override
+  {
+    return true;
+  }
   /** \brief PCL registration hook: set the target keypoints from a PCLPointCloud2.
     * \param[in] cloud2 fields x, y, z (metres), and the normals if it has them; without them,
     * the normals of the previous target are kept if it has the same size
@@ -126,7 +155,10 @@ public:
   setTargetPoints (pcl::PCLPointCloud2::ConstPtr cloud2) override;
   /** \brief PCL registration hook: true, the target normals are needed. */
   bool
-  requiresTargetNormals () const override { return true; }
+  requiresTargetNormals () const override
+  {
+    return true;
+  }
   /** \brief PCL registration hook: set the normals of the target keypoints already given.
     * \param[in] cloud2 fields normal_x, normal_y, normal_z (unit length); ignored if it has no
     * normals or its size differs from the target's
@@ -139,9 +171,15 @@ public:
     */
   ///@{
   void
-  setMaxDistanceDifference (float value) { max_distance_difference_ = value; }
+  setMaxDistanceDifference (float value)
+  {
+    max_distance_difference_ = value;
+  }
   float
-  getMaxDistanceDifference () const { return max_distance_difference_; }
+  getMaxDistanceDifference () const
+  {
+    return max_distance_difference_;
+  }
   ///@}
 
   /** \brief Largest difference of each point pair feature angle (radians). Default 35 deg; must
@@ -149,25 +187,43 @@ public:
     */
   ///@{
   void
-  setMaxAngleDifference (float value) { max_angle_difference_ = value; }
+  setMaxAngleDifference (float value)
+  {
+    max_angle_difference_ = value;
+  }
   float
-  getMaxAngleDifference () const { return max_angle_difference_; }
+  getMaxAngleDifference () const
+  {
+    return max_angle_difference_;
+  }
   ///@}
 
   /** \brief Shortest triangle edge (metres). Default 0.010; must be > 0. */
   ///@{
   void
-  setMinEdgeLength (float value) { min_edge_length_ = value; }
+  setMinEdgeLength (float value)
+  {
+    min_edge_length_ = value;
+  }
   float
-  getMinEdgeLength () const { return min_edge_length_; }
+  getMinEdgeLength () const
+  {
+    return min_edge_length_;
+  }
   ///@}
 
   /** \brief Longest triangle edge (metres). Default 0.125; must be >= the shortest. */
   ///@{
   void
-  setMaxEdgeLength (float value) { max_edge_length_ = value; }
+  setMaxEdgeLength (float value)
+  {
+    max_edge_length_ = value;
+  }
   float
-  getMaxEdgeLength () const { return max_edge_length_; }
+  getMaxEdgeLength () const
+  {
+    return max_edge_length_;
+  }
   ///@}
 
   /** \brief Every triangle angle must exceed this (radians). Default 10 deg; must be in
@@ -175,9 +231,15 @@ public:
     */
   ///@{
   void
-  setMinTriangleAngle (float value) { min_triangle_angle_ = value; }
+  setMinTriangleAngle (float value)
+  {
+    min_triangle_angle_ = value;
+  }
   float
-  getMinTriangleAngle () const { return min_triangle_angle_; }
+  getMinTriangleAngle () const
+  {
+    return min_triangle_angle_;
+  }
   ///@}
 
   /** \brief Triangles closer than this (metres) overlap; 0 rejects only touching or
@@ -186,9 +248,15 @@ public:
     */
   ///@{
   void
-  setOverlapDistance (float value) { overlap_distance_ = value; }
+  setOverlapDistance (float value)
+  {
+    overlap_distance_ = value;
+  }
   float
-  getOverlapDistance () const { return overlap_distance_; }
+  getOverlapDistance () const
+  {
+    return overlap_distance_;
+  }
   ///@}
 
   /** \brief L: the most accepted triplets one keypoint may take part in. Default 10; must be
@@ -196,9 +264,15 @@ public:
     */
   ///@{
   void
-  setMaxTripletsPerKeypoint (int value) { max_triplets_per_keypoint_ = value; }
+  setMaxTripletsPerKeypoint (int value)
+  {
+    max_triplets_per_keypoint_ = value;
+  }
   int
-  getMaxTripletsPerKeypoint () const { return max_triplets_per_keypoint_; }
+  getMaxTripletsPerKeypoint () const
+  {
+    return max_triplets_per_keypoint_;
+  }
   ///@}
 
   /** \brief Hard cap on accepted triplets, which bounds memory; reaching it prints a warning.
@@ -206,9 +280,15 @@ public:
     */
   ///@{
   void
-  setMaxTriplets (std::size_t value) { max_triplets_ = value; }
+  setMaxTriplets (std::size_t value)
+  {
+    max_triplets_ = value;
+  }
   std::size_t
-  getMaxTriplets () const { return max_triplets_; }
+  getMaxTriplets () const
+  {
+    return max_triplets_;
+  }
   ///@}
 
 protected:

@@ -45,26 +45,44 @@ public:
     */
   ///@{
   void
-  setModel (const std::shared_ptr<const ObjectModel>& model) { model_ = model; }
+  setModel (const std::shared_ptr<const ObjectModel>& model)
+  {
+    model_ = model;
+  }
   const std::shared_ptr<const ObjectModel>&
-  getModel () const { return model_; }
+  getModel () const
+  {
+    return model_;
+  }
   ///@}
 
   /** \brief The frame's keypoints (positions in metres, camera frame). Required. */
   ///@{
   void
-  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints) { keypoints_ = keypoints; }
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
   const KeypointCloud::ConstPtr&
-  getInputKeypoints () const { return keypoints_; }
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
   ///@}
   /** \brief One descriptor per keypoint, in the keypoints' order. Required; detect() fails if
     * the counts differ.
     */
   ///@{
   void
-  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors)
+  {
+    descriptors_ = descriptors;
+  }
   const SIFTDescriptorCloud::ConstPtr&
-  getInputDescriptors () const { return descriptors_; }
+  getInputDescriptors () const
+  {
+    return descriptors_;
+  }
   ///@}
 
   /** \brief Only these keypoints may form instances (e.g. those no model uses yet); unset means
@@ -72,9 +90,15 @@ public:
     */
   ///@{
   void
-  setCandidates (const pcl::IndicesConstPtr& candidates) { candidates_ = candidates; }
+  setCandidates (const pcl::IndicesConstPtr& candidates)
+  {
+    candidates_ = candidates;
+  }
   const pcl::IndicesConstPtr&
-  getCandidates () const { return candidates_; }
+  getCandidates () const
+  {
+    return candidates_;
+  }
   ///@}
 
   /** \brief Largest L2 descriptor distance of a landmark -> keypoint match. Default 200; must be
@@ -82,57 +106,99 @@ public:
     */
   ///@{
   void
-  setMaxDescriptorDistance (float distance) { max_descriptor_distance_ = distance; }
+  setMaxDescriptorDistance (float distance)
+  {
+    max_descriptor_distance_ = distance;
+  }
   float
-  getMaxDescriptorDistance () const { return max_descriptor_distance_; }
+  getMaxDescriptorDistance () const
+  {
+    return max_descriptor_distance_;
+  }
   ///@}
 
   /** \brief RANSAC inlier threshold (metres). Default 0.005 (the paper); must be > 0. */
   ///@{
   void
-  setInlierThreshold (float threshold) { inlier_threshold_ = threshold; }
+  setInlierThreshold (float threshold)
+  {
+    inlier_threshold_ = threshold;
+  }
   float
-  getInlierThreshold () const { return inlier_threshold_; }
+  getInlierThreshold () const
+  {
+    return inlier_threshold_;
+  }
   ///@}
 
   /** \brief Fewest inliers of a detection. Default 5 (the paper); must be >= 3. */
   ///@{
   void
-  setMinInliers (std::size_t count) { min_inliers_ = count; }
+  setMinInliers (std::size_t count)
+  {
+    min_inliers_ = count;
+  }
   std::size_t
-  getMinInliers () const { return min_inliers_; }
+  getMinInliers () const
+  {
+    return min_inliers_;
+  }
   ///@}
 
   /** \brief The inlier ratio must exceed this. Default 0.125 (the paper); must be in [0, 1). */
   ///@{
   void
-  setMinInlierRatio (float ratio) { min_inlier_ratio_ = ratio; }
+  setMinInlierRatio (float ratio)
+  {
+    min_inlier_ratio_ = ratio;
+  }
   float
-  getMinInlierRatio () const { return min_inlier_ratio_; }
+  getMinInlierRatio () const
+  {
+    return min_inlier_ratio_;
+  }
   ///@}
 
   /** \brief RANSAC hypotheses per detection. Default 1000; must be >= 1. */
   ///@{
   void
-  setMaxIterations (int iterations) { max_iterations_ = iterations; }
+  setMaxIterations (int iterations)
+  {
+    max_iterations_ = iterations;
+  }
   int
-  getMaxIterations () const { return max_iterations_; }
+  getMaxIterations () const
+  {
+    return max_iterations_;
+  }
   ///@}
 
   /** \brief Seed of the random draws. Default 0. */
   ///@{
   void
-  setSeed (std::uint32_t seed) { seed_ = seed; }
+  setSeed (std::uint32_t seed)
+  {
+    seed_ = seed;
+  }
   std::uint32_t
-  getSeed () const { return seed_; }
+  getSeed () const
+  {
+    return seed_;
+  }
   ///@}
 
   /** \brief Most instances to find (0 = no limit). Default 0. */
   ///@{
   void
-  setMaxInstances (std::size_t count) { max_instances_ = count; }
+  setMaxInstances (std::size_t count)
+  {
+    max_instances_ = count;
+  }
   std::size_t
-  getMaxInstances () const { return max_instances_; }
+  getMaxInstances () const
+  {
+    return max_instances_;
+  }
   ///@}
 
   /** \brief Find the model's instances.

@@ -20,8 +20,11 @@ namespace mid {
   * and its instances re-expressed as instances of `into`.
   */
 void
-mergeModel (ObjectModel& into, const ObjectModel& from, const Eigen::Matrix4f& into_to_from,
-            const std::vector<std::pair<int, int>>& same_landmarks, float max_angle,
+mergeModel (ObjectModel& into,
+            const ObjectModel& from,
+            const Eigen::Matrix4f& into_to_from,
+            const std::vector<std::pair<int, int>>& same_landmarks,
+            float max_angle,
             float max_distance);
 
 /** \brief Add a detected instance to a model and extend the model with its observations'
@@ -34,7 +37,10 @@ mergeModel (ObjectModel& into, const ObjectModel& from, const Eigen::Matrix4f& i
   *            one within these (radians, metres) is the same instance
   */
 void
-addInstance (ObjectModel& model, const ModelInstance& instance,
-             const SIFTDescriptorCloud& frame_descriptors, float max_angle, float max_distance);
+addInstance (ObjectModel& model,
+             const ModelInstance& instance,
+             const SIFTDescriptorCloud& frame_descriptors,
+             float max_angle,
+             float max_distance);
 
 } // namespace mid

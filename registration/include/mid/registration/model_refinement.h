@@ -28,7 +28,10 @@ namespace mid {
   *         instance with fewer than three distinct landmarks keeps its pose
   */
 float
-refineModel (ObjectModel& model, const KeypointCloud& keypoints, int max_iterations = 20,
-             std::size_t fixed_instance = 0, std::vector<float>* costs = nullptr);
+refineModel (ObjectModel& model,
+             const KeypointCloud& keypoints,
+             int max_iterations = 20,
+             std::size_t fixed_instance = 0,
+             std::vector<float>* costs = nullptr);
 
 } // namespace mid

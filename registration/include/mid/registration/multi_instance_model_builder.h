@@ -51,9 +51,15 @@ public:
     */
   ///@{
   void
-  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors) { descriptors_ = descriptors; }
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors)
+  {
+    descriptors_ = descriptors;
+  }
   const SIFTDescriptorCloud::ConstPtr&
-  getInputDescriptors () const { return descriptors_; }
+  getInputDescriptors () const
+  {
+    return descriptors_;
+  }
   ///@}
 
   /** \brief The clusters of triplet matches (indices into the input cloud). Required; compute()
@@ -61,9 +67,15 @@ public:
     */
   ///@{
   void
-  setClusters (const TripletClustersConstPtr& clusters) { clusters_ = clusters; }
+  setClusters (const TripletClustersConstPtr& clusters)
+  {
+    clusters_ = clusters;
+  }
   const TripletClustersConstPtr&
-  getClusters () const { return clusters_; }
+  getClusters () const
+  {
+    return clusters_;
+  }
   ///@}
 
   /** \brief The weight delta of an edge between sets that share keypoints (metres, like the rms
@@ -71,17 +83,29 @@ public:
     */
   ///@{
   void
-  setSharedPointWeight (double delta) { shared_point_weight_ = delta; }
+  setSharedPointWeight (double delta)
+  {
+    shared_point_weight_ = delta;
+  }
   double
-  getSharedPointWeight () const { return shared_point_weight_; }
+  getSharedPointWeight () const
+  {
+    return shared_point_weight_;
+  }
   ///@}
 
   /** \brief Most alternations of the joint refinement; 0 skips it. Default 20; must be >= 0. */
   ///@{
   void
-  setRefinementIterations (int iterations) { refinement_iterations_ = iterations; }
+  setRefinementIterations (int iterations)
+  {
+    refinement_iterations_ = iterations;
+  }
   int
-  getRefinementIterations () const { return refinement_iterations_; }
+  getRefinementIterations () const
+  {
+    return refinement_iterations_;
+  }
   ///@}
 
   /** \brief Two instances of one object are the same if their poses differ by less than this
@@ -97,10 +121,16 @@ public:
   }
   /** \brief Rotation threshold of two duplicate instances (radians). Default 10 deg. */
   float
-  getDuplicateAngle () const { return duplicate_angle_; }
+  getDuplicateAngle () const
+  {
+    return duplicate_angle_;
+  }
   /** \brief Distance threshold of two duplicate instances (metres). Default 0.01. */
   float
-  getDuplicateDistance () const { return duplicate_distance_; }
+  getDuplicateDistance () const
+  {
+    return duplicate_distance_;
+  }
 
   /** \brief Build the models.
     * \param[out] models one per connected component, largest (most observations) first
@@ -114,7 +144,10 @@ public:
     * the candidates for additional instances.
     */
   const pcl::Indices&
-  getUnusedKeypoints () const { return unused_keypoints_; }
+  getUnusedKeypoints () const
+  {
+    return unused_keypoints_;
+  }
 
 private:
   /** \brief Check inputs and parameters; prints the problem. */

@@ -14,7 +14,7 @@ namespace mid {
 struct ModelInstance
 {
   /** \brief Rigid pose mapping model coordinates to camera coordinates (metres). */
-  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
   /** \brief The frame's keypoints observed on this instance (indices into the keypoint cloud),
     * and for each the model landmark it observes (index into ObjectModel::landmarks; both
     * vectors have the same size).
@@ -30,7 +30,8 @@ struct ModelInstance
 };
 
 /** \brief Instances of one object (Eigen-aligned, as ModelInstance holds a fixed-size matrix). */
-using ModelInstances = std::vector<ModelInstance, Eigen::aligned_allocator<ModelInstance>>;
+using ModelInstances =
+    std::vector<ModelInstance, Eigen::aligned_allocator<ModelInstance>>;
 
 /** \brief A sparse 3D model of an object discovered from its repeated instances, and where those
   * instances are.
@@ -66,7 +67,8 @@ using ObjectModels = std::vector<ObjectModel>;
   * indices must be valid for model and keypoints (not checked)
   */
 void
-updateInstanceError (const ObjectModel& model, const KeypointCloud& keypoints,
+updateInstanceError (const ObjectModel& model,
+                     const KeypointCloud& keypoints,
                      ModelInstance& instance);
 
 /** \brief True if two model -> camera poses place the model within max_angle (radians) and
@@ -79,8 +81,11 @@ updateInstanceError (const ObjectModel& model, const KeypointCloud& keypoints,
   * \return true if both bounds hold (false for NaN input)
   */
 bool
-posesCoincide (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector3f& center,
-               float max_angle, float max_distance);
+posesCoincide (const Eigen::Matrix4f& a,
+               const Eigen::Matrix4f& b,
+               const Eigen::Vector3f& center,
+               float max_angle,
+               float max_distance);
 
 /** \brief Recompute a model's diameter from its landmarks (0 for fewer than two).
   * \param[in,out] model its landmarks are read, its diameter written

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <mid/registration/object_model.h>
-
 #include <mid/io/staged_files.h>
+#include <mid/registration/object_model.h>
 
 #include <string>
 
@@ -26,7 +25,8 @@ constexpr int OBJECT_MODEL_FILE_VERSION = 1;
   * \return false (with a PCL_ERROR) if a file cannot be written
   */
 bool
-saveObjectModel (const std::string& path, const ObjectModel& model,
+saveObjectModel (const std::string& path,
+                 const ObjectModel& model,
                  io::StagedFiles* staged = nullptr);
 
 /** \brief Read a model written by saveObjectModel().

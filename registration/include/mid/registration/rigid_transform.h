@@ -14,7 +14,8 @@ namespace mid {
   * rotation is not unique and one of the solutions is returned (no error is reported)
   */
 Eigen::Matrix4f
-estimateRigidTransform (const Eigen::Matrix3Xf& from, const Eigen::Matrix3Xf& to,
+estimateRigidTransform (const Eigen::Matrix3Xf& from,
+                        const Eigen::Matrix3Xf& to,
                         float* rms_error = nullptr);
 
 } // namespace mid

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <pcl/correspondence.h>
 #include <pcl/types.h>
-
-#include <Eigen/Core>
 
 #include <cstddef>
 #include <vector>
@@ -20,7 +19,7 @@ struct TripletCluster
     */
   pcl::Correspondences correspondences;
   /** \brief Rigid transform mapping set P onto set Q, least squares over all pairs. */
-  Eigen::Matrix4f transformation = Eigen::Matrix4f::Identity ();
+  Eigen::Matrix4f transformation = Eigen::Matrix4f::Identity();
   /** \brief Root mean square residual of the pairs under the transform (metres). */
   float rms_error = 0.0f;
   /** \brief The keypoints of set P and of set Q (sorted, distinct). */
@@ -40,6 +39,7 @@ struct TripletCluster
 };
 
 /** \brief Clusters of one frame (Eigen-aligned, as TripletCluster holds a fixed-size matrix). */
-using TripletClusters = std::vector<TripletCluster, Eigen::aligned_allocator<TripletCluster>>;
+using TripletClusters =
+    std::vector<TripletCluster, Eigen::aligned_allocator<TripletCluster>>;
 
 } // namespace mid

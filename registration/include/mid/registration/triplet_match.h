@@ -21,7 +21,7 @@ struct TripletMatch
   /** \brief The three keypoint pairs (P_k, Q_k). */
   std::array<pcl::Correspondence, 3> correspondences;
   /** \brief Rigid transform with Q_k ~= R P_k + t (least squares over the three pairs). */
-  Eigen::Matrix4f transformation = Eigen::Matrix4f::Identity ();
+  Eigen::Matrix4f transformation = Eigen::Matrix4f::Identity();
   /** \brief Root mean square of |R P_k + t - Q_k| over the three pairs (metres). */
   float rms_error = 0.0f;
 
@@ -29,6 +29,7 @@ struct TripletMatch
 };
 
 /** \brief Triplet matches (Eigen-aligned, as TripletMatch holds a fixed-size matrix). */
-using TripletMatches = std::vector<TripletMatch, Eigen::aligned_allocator<TripletMatch>>;
+using TripletMatches =
+    std::vector<TripletMatch, Eigen::aligned_allocator<TripletMatch>>;
 
 } // namespace mid

@@ -15,9 +15,13 @@ namespace visualization {
   */
 struct ImageFit
 {
+  /** \brief Viewport pixels per image pixel. */
   double scale = 1.0;
+  /** \brief Viewport pixels left of and above the image (the bands that letterbox it). */
+  ///@{
   double offset_u = 0.0;
   double offset_v = 0.0;
+  ///@}
 };
 
 /** \brief Fit an image into a viewport (see ImageFit); the identity when the sizes agree.

@@ -51,20 +51,38 @@ template <typename PointT>
 class DiscoveryViewer
 {
 public:
+  /** \brief The scene: an organized cloud with x, y, z (metres) and r, g, b. */
   using PointCloud = pcl::PointCloud<PointT>;
+  /** \brief Shared pointer to a const scene. */
   using PointCloudConstPtr = typename PointCloud::ConstPtr;
 
   /** \brief The organized scene cloud the result was computed on (metres). */
+  ///@{
   void
-  setInputCloud (const PointCloudConstPtr& cloud) { cloud_ = cloud; }
+  setInputCloud (const PointCloudConstPtr& cloud)
+  {
+    cloud_ = cloud;
+  }
   const PointCloudConstPtr&
-  getInputCloud () const { return cloud_; }
+  getInputCloud () const
+  {
+    return cloud_;
+  }
+  ///@}
 
   /** \brief The result to show (copied). */
+  ///@{
   void
-  setResult (const DiscoveryResult& result) { result_ = result; }
+  setResult (const DiscoveryResult& result)
+  {
+    result_ = result;
+  }
   const DiscoveryResult&
-  getResult () const { return result_; }
+  getResult () const
+  {
+    return result_;
+  }
+  ///@}
 
   /** \brief The camera's intrinsics (fx, fy, cx, cy); without them they are estimated from the
     * cloud.
@@ -77,18 +95,34 @@ public:
   }
 
   /** \brief Draw the self-matches as lines (default: off). */
+  ///@{
   void
-  setShowMatches (bool show) { show_matches_ = show; }
+  setShowMatches (bool show)
+  {
+    show_matches_ = show;
+  }
   bool
-  getShowMatches () const { return show_matches_; }
+  getShowMatches () const
+  {
+    return show_matches_;
+  }
+  ///@}
 
   /** \brief Show the model panel on the right (default: on; it appears only if the result has
     * objects).
     */
+  ///@{
   void
-  setShowModelPanel (bool show) { show_model_panel_ = show; }
+  setShowModelPanel (bool show)
+  {
+    show_model_panel_ = show;
+  }
   bool
-  getShowModelPanel () const { return show_model_panel_; }
+  getShowModelPanel () const
+  {
+    return show_model_panel_;
+  }
+  ///@}
 
   /** \brief Look at the scene from `position` (camera frame, metres) instead of through the
     * camera: towards the mean of the instances' positions (the cloud's centroid if there are
@@ -103,7 +137,10 @@ public:
 
   /** \brief Go back to the default camera (the RGB-D camera's view). */
   void
-  resetViewpoint () { has_viewpoint_ = false; }
+  resetViewpoint ()
+  {
+    has_viewpoint_ = false;
+  }
 
   /** \brief Render off-screen at the given size and write a PNG (VTK's vtkWindowToImageFilter
     * and vtkPNGWriter).
@@ -143,7 +180,7 @@ private:
   bool has_intrinsics_ = false;
   bool show_matches_ = false;
   bool show_model_panel_ = true;
-  Eigen::Vector3f viewpoint_ = Eigen::Vector3f::Zero ();
+  Eigen::Vector3f viewpoint_ = Eigen::Vector3f::Zero();
   bool has_viewpoint_ = false;
 };
 

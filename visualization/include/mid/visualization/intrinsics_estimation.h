@@ -22,7 +22,8 @@ namespace visualization {
   */
 template <typename PointT>
 bool
-estimateIntrinsics (const pcl::PointCloud<PointT>& cloud, io::CameraIntrinsics& intrinsics);
+estimateIntrinsics (const pcl::PointCloud<PointT>& cloud,
+                    io::CameraIntrinsics& intrinsics);
 
 } // namespace visualization
 } // namespace mid

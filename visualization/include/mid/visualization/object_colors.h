@@ -9,9 +9,12 @@ namespace visualization {
 /** \brief An 8-bit RGB color. */
 struct ObjectColor
 {
+  /** \brief Red, green and blue, 0..255. */
+  ///@{
   std::uint8_t r = 0;
   std::uint8_t g = 0;
   std::uint8_t b = 0;
+  ///@}
 };
 
 /** \brief Number of hand-picked colors in the palette of objectColor(). */

@@ -26,7 +26,9 @@ namespace visualization {
   */
 template <typename PointT>
 bool
-renderOverlay (const pcl::PointCloud<PointT>& cloud, const DiscoveryResult& result, cv::Mat& image);
+renderOverlay (const pcl::PointCloud<PointT>& cloud,
+               const DiscoveryResult& result,
+               cv::Mat& image);
 
 /** \brief Draw a discovery result with renderOverlay() and write it with cv::imwrite.
   * \param[in] path the image file; its extension chooses the format (PNG: .png)

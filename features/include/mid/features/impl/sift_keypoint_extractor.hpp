@@ -21,7 +21,8 @@ template <typename PointT>
 cv::Mat
 organizedCloudToGray (const pcl::PointCloud<PointT>& cloud)
 {
-  cv::Mat bgr (static_cast<int> (cloud.height), static_cast<int> (cloud.width), CV_8UC3);
+  cv::Mat bgr (
+      static_cast<int> (cloud.height), static_cast<int> (cloud.width), CV_8UC3);
   for (int v = 0; v < bgr.rows; ++v) {
     auto* row = bgr.ptr<cv::Vec3b> (v);
     for (int u = 0; u < bgr.cols; ++u) {
@@ -48,25 +49,33 @@ keypointPrecedes (const cv::KeyPoint& a, const cv::KeyPoint& b)
 
 template <typename PointT>
 bool
-SIFTKeypointExtractor<PointT>::checkInputs () const
+SIFTKeypointExtractor<PointT>::checkInputs() const
 {
-  if (!input_ || input_->empty ()) {
+  if (!input_ || input_->empty()) {
     PCL_ERROR ("[mid::SIFTKeypointExtractor::compute] No input cloud given.\n");
     return false;
   }
-  if (!input_->isOrganized ()) {
+  if (!input_->isOrganized()) {
     PCL_ERROR ("[mid::SIFTKeypointExtractor::compute] The input cloud is not organized "
-               "(height %u); an RGB-D frame is required.\n", input_->height);
+               "(height %u); an RGB-D frame is required.\n",
+               input_->height);
     return false;
   }
   if (max_keypoints_ < 0 || octave_layers_ < 1 || contrast_threshold_ <= 0.0 ||
       edge_threshold_ <= 0.0 || sigma_ <= 0.0 || !(normal_radius_ > 0.0f) ||
       min_normal_neighbors_ < 3) {
-    PCL_ERROR ("[mid::SIFTKeypointExtractor::compute] Invalid parameter: max keypoints %d "
-               "(>= 0), octave layers %d (>= 1), contrast threshold %g, edge threshold %g, sigma "
-               "%g, normal radius %g (all > 0), min normal neighbors %d (>= 3).\n",
-               max_keypoints_, octave_layers_, contrast_threshold_, edge_threshold_, sigma_,
-               static_cast<double> (normal_radius_), min_normal_neighbors_);
+    PCL_ERROR (
+        "[mid::SIFTKeypointExtractor::compute] Invalid parameter: max keypoints %d "
+        "(>= 0), octave layers %d (>= 1), contrast threshold %g, edge threshold %g, "
+        "sigma "
+        "%g, normal radius %g (all > 0), min normal neighbors %d (>= 3).\n",
+        max_keypoints_,
+        octave_layers_,
+        contrast_threshold_,
+        edge_threshold_,
+        sigma_,
+        static_cast<double> (normal_radius_),
+        min_normal_neighbors_);
     return false;
   }
   return true;
@@ -74,15 +83,17 @@ SIFTKeypointExtractor<PointT>::checkInputs () const
 
 template <typename PointT>
 bool
-SIFTKeypointExtractor<PointT>::estimateNormal (int u, int v, pcl::PointNormal& keypoint) const
+SIFTKeypointExtractor<PointT>::estimateNormal (int u,
+                                               int v,
+                                               pcl::PointNormal& keypoint) const
 {
   const int width = static_cast<int> (input_->width);
   const int height = static_cast<int> (input_->height);
-  const Eigen::Vector3f center = input_->at (u, v).getVector3fMap ();
+  const Eigen::Vector3f center = input_->at (u, v).getVector3fMap();
 
   // Pixel pitch in metres at this keypoint: the nearest valid 4-neighbour. It turns the metric
   // radius into a pixel window without knowing the camera's focal length.
-  float pitch = std::numeric_limits<float>::infinity ();
+  float pitch = std::numeric_limits<float>::infinity();
   const int offsets[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (const auto& offset : offsets) {
     const int nu = u + offset[0], nv = v + offset[1];
@@ -90,13 +101,15 @@ SIFTKeypointExtractor<PointT>::estimateNormal (int u, int v, pcl::PointNormal& k
       continue;
     const PointT& neighbor = input_->at (nu, nv);
     if (pcl::isXYZFinite (neighbor))
-      pitch = std::min (pitch, (neighbor.getVector3fMap () - center).norm ());
+      pitch = std::min (pitch, (neighbor.getVector3fMap() - center).norm());
   }
   if (!std::isfinite (pitch))
     return false;
   constexpr int kMaxHalfWindow = 25;
   const int half = std::clamp (
-      static_cast<int> (std::ceil (normal_radius_ / std::max (pitch, 1e-6f))), 1, kMaxHalfWindow);
+      static_cast<int> (std::ceil (normal_radius_ / std::max (pitch, 1e-6f))),
+      1,
+      kMaxHalfWindow);
 
   const float squared_radius = normal_radius_ * normal_radius_;
   pcl::Indices neighbors;
@@ -104,10 +117,10 @@ SIFTKeypointExtractor<PointT>::estimateNormal (int u, int v, pcl::PointNormal& k
     for (int nu = std::max (0, u - half); nu <= std::min (width - 1, u + half); ++nu) {
       const PointT& neighbor = input_->at (nu, nv);
       if (pcl::isXYZFinite (neighbor) &&
-          (neighbor.getVector3fMap () - center).squaredNorm () <= squared_radius)
+          (neighbor.getVector3fMap() - center).squaredNorm() <= squared_radius)
         neighbors.push_back (nv * width + nu);
     }
-  if (static_cast<int> (neighbors.size ()) < min_normal_neighbors_)
+  if (static_cast<int> (neighbors.size()) < min_normal_neighbors_)
     return false;
 
   Eigen::Vector4f plane;
@@ -115,52 +128,54 @@ SIFTKeypointExtractor<PointT>::estimateNormal (int u, int v, pcl::PointNormal& k
   if (!pcl::computePointNormal (*input_, neighbors, plane, curvature))
     return false;
   pcl::flipNormalTowardsViewpoint (input_->at (u, v), 0.0f, 0.0f, 0.0f, plane);
-  keypoint.getVector3fMap () = center;
-  keypoint.getNormalVector3fMap () = plane.head<3> ().normalized ();
+  keypoint.getVector3fMap() = center;
+  keypoint.getNormalVector3fMap() = plane.head<3>().normalized();
   keypoint.curvature = curvature;
-  return keypoint.getNormalVector3fMap ().allFinite ();
+  return keypoint.getNormalVector3fMap().allFinite();
 }
 
 template <typename PointT>
 bool
-SIFTKeypointExtractor<PointT>::compute (KeypointCloud& keypoints, SIFTDescriptorCloud& descriptors)
+SIFTKeypointExtractor<PointT>::compute (KeypointCloud& keypoints,
+                                        SIFTDescriptorCloud& descriptors)
 {
-  keypoints.clear ();
-  descriptors.clear ();
-  image_keypoints_.clear ();
-  if (!checkInputs () || !initCompute ())
+  keypoints.clear();
+  descriptors.clear();
+  image_keypoints_.clear();
+  if (!checkInputs() || !initCompute())
     return false;
 
   std::vector<bool> allowed;
   if (!fake_indices_) {
-    allowed.assign (input_->size (), false);
+    allowed.assign (input_->size(), false);
     for (const auto index : *indices_)
       allowed[static_cast<std::size_t> (index)] = true;
   }
 
   const cv::Mat gray = detail::organizedCloudToGray (*input_);
-  cv::Ptr<cv::SIFT> sift =
-      cv::SIFT::create (0, octave_layers_, contrast_threshold_, edge_threshold_, sigma_);
+  cv::Ptr<cv::SIFT> sift = cv::SIFT::create (
+      0, octave_layers_, contrast_threshold_, edge_threshold_, sigma_);
   std::vector<cv::KeyPoint> cv_keypoints;
   cv::Mat cv_descriptors;
-  sift->detectAndCompute (gray, cv::noArray (), cv_keypoints, cv_descriptors);
+  sift->detectAndCompute (gray, cv::noArray(), cv_keypoints, cv_descriptors);
 
-  std::vector<std::size_t> order (cv_keypoints.size ());
-  std::iota (order.begin (), order.end (), std::size_t{0});
-  std::sort (order.begin (), order.end (), [&cv_keypoints] (std::size_t a, std::size_t b) {
-    return detail::keypointPrecedes (cv_keypoints[a], cv_keypoints[b]);
-  });
+  std::vector<std::size_t> order (cv_keypoints.size());
+  std::iota (order.begin(), order.end(), std::size_t{0});
+  std::sort (
+      order.begin(), order.end(), [&cv_keypoints] (std::size_t a, std::size_t b) {
+        return detail::keypointPrecedes (cv_keypoints[a], cv_keypoints[b]);
+      });
 
   const int width = static_cast<int> (input_->width);
   const int height = static_cast<int> (input_->height);
   for (const std::size_t k : order) {
-    if (max_keypoints_ > 0 && static_cast<int> (keypoints.size ()) >= max_keypoints_)
+    if (max_keypoints_ > 0 && static_cast<int> (keypoints.size()) >= max_keypoints_)
       break;
     const cv::KeyPoint& kp = cv_keypoints[k];
     const int u = std::clamp (static_cast<int> (std::lround (kp.pt.x)), 0, width - 1);
     const int v = std::clamp (static_cast<int> (std::lround (kp.pt.y)), 0, height - 1);
     const pcl::index_t pixel = v * width + u;
-    if (!allowed.empty () && !allowed[static_cast<std::size_t> (pixel)])
+    if (!allowed.empty() && !allowed[static_cast<std::size_t> (pixel)])
       continue;
     if (!pcl::isXYZFinite (input_->at (u, v)))
       continue;
@@ -172,10 +187,10 @@ SIFTKeypointExtractor<PointT>::compute (KeypointCloud& keypoints, SIFTDescriptor
     const float* row = cv_descriptors.ptr<float> (static_cast<int> (k));
     std::copy (row, row + 128, descriptor.histogram);
     descriptors.push_back (descriptor);
-    image_keypoints_.push_back (
-        ImageKeypoint{kp.pt.x, kp.pt.y, kp.size, kp.angle, kp.response, kp.octave, pixel});
+    image_keypoints_.push_back (ImageKeypoint{
+        kp.pt.x, kp.pt.y, kp.size, kp.angle, kp.response, kp.octave, pixel});
   }
-  deinitCompute ();
+  deinitCompute();
   return true;
 }
 

@@ -2,7 +2,6 @@
 
 #include <mid/visualization/camera_view.h>
 #include <mid/visualization/discovery_viewer.h>
-#include <mid/visualization/display.h>
 #include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 
@@ -11,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <string>
 
 namespace mid {
 namespace visualization {
@@ -29,6 +30,12 @@ addModelPanel (pcl::visualization::PCLVisualizer& viewer,
                double left,
                int height);
 
+/** \brief A renderer drawn over the viewport (VTK layer 1, same extent and camera), for what
+  * must stay visible in front of the scene; its index in the viewer's renderer collection.
+  */
+int
+addOverlayLayer (pcl::visualization::PCLVisualizer& viewer, int viewport);
+
 /** \brief Look from `position` at `target` (camera frame), -y up, in the viewport. */
 bool
 lookAt (pcl::visualization::PCLVisualizer& viewer,
@@ -36,11 +43,20 @@ lookAt (pcl::visualization::PCLVisualizer& viewer,
         const Eigen::Vector3f& target,
         int viewport);
 
-/** \brief Render the viewer's window and write it as a PNG; false (with a PCL_ERROR) if the
-  * file cannot be written.
+/** \brief Open the display, create a PCLVisualizer on it (off-screen, or with an interactor),
+  * let `populate` fill it, then write it as a PNG or run it until the window is closed. False
+  * (with a PCL_ERROR naming `caller`) if there is no display, `populate` fails, or the file
+  * cannot be written. VTK's deprecation warnings (from inside VTK) are not printed meanwhile.
   */
 bool
-saveWindowPNG (pcl::visualization::PCLVisualizer& viewer, const std::string& path);
+renderOffScreen (
+    const char* caller,
+    const std::string& path,
+    const std::function<bool (pcl::visualization::PCLVisualizer&)>& populate);
+bool
+renderInteractive (
+    const char* caller,
+    const std::function<bool (pcl::visualization::PCLVisualizer&)>& populate);
 
 /** \brief Size of the landmark points for a picture `scale` times the image's size. */
 inline double
@@ -58,35 +74,27 @@ constexpr double kFrameAxes = 0.05;
 
 template <typename PointT>
 bool
-DiscoveryViewer<PointT>::saveScreenshot (const std::string& path, int width, int height) const
+DiscoveryViewer<PointT>::saveScreenshot (const std::string& path,
+                                         int width,
+                                         int height) const
 {
-  if (!displayAvailable ()) {
-    PCL_ERROR ("[mid::visualization::DiscoveryViewer::saveScreenshot] no X display (DISPLAY "
-               "unset or unreachable); run under xvfb-run -a\n");
-    return false;
-  }
-  pcl::visualization::PCLVisualizer viewer ("mid", false);
-  viewer.getRenderWindow ()->SetOffScreenRendering (1);
-  if (!populate (viewer, width, height))
-    return false;
-  return detail::saveWindowPNG (viewer, path);
+  return detail::renderOffScreen (
+      "mid::visualization::DiscoveryViewer::saveScreenshot",
+      path,
+      [this, width, height] (pcl::visualization::PCLVisualizer& viewer) {
+        return populate (viewer, width, height);
+      });
 }
 
 template <typename PointT>
 bool
 DiscoveryViewer<PointT>::spin (int width, int height) const
 {
-  if (!displayAvailable ()) {
-    PCL_ERROR ("[mid::visualization::DiscoveryViewer::spin] no X display (DISPLAY unset or "
-               "unreachable)\n");
-    return false;
-  }
-  pcl::visualization::PCLVisualizer viewer ("mid: multi-instance discovery", true);
-  if (!populate (viewer, width, height))
-    return false;
-  viewer.spin ();
-  viewer.close ();
-  return true;
+  return detail::renderInteractive (
+      "mid::visualization::DiscoveryViewer::spin",
+      [this, width, height] (pcl::visualization::PCLVisualizer& viewer) {
+        return populate (viewer, width, height);
+      });
 }
 
 template <typename PointT>
@@ -95,14 +103,17 @@ DiscoveryViewer<PointT>::populate (pcl::visualization::PCLVisualizer& viewer,
                                    int width,
                                    int height) const
 {
-  if (!cloud_ || !cloud_->isOrganized () ||
-      cloud_->size () != std::size_t (cloud_->width) * cloud_->height) {
-    PCL_ERROR ("[mid::visualization::DiscoveryViewer] no organized input cloud given\n");
+  if (!cloud_ || !cloud_->isOrganized() ||
+      cloud_->size() != std::size_t (cloud_->width) * cloud_->height) {
+    PCL_ERROR (
+        "[mid::visualization::DiscoveryViewer] no organized input cloud given\n");
     return false;
   }
   if (width <= 0 || height <= 0) {
     PCL_ERROR ("[mid::visualization::DiscoveryViewer] the picture size %d x %d is not "
-               "positive\n", width, height);
+               "positive\n",
+               width,
+               height);
     return false;
   }
   io::CameraIntrinsics intrinsics = intrinsics_;
@@ -110,8 +121,8 @@ DiscoveryViewer<PointT>::populate (pcl::visualization::PCLVisualizer& viewer,
     return false;
 
   viewer.setShowFPS (false);
-  viewer.getRenderWindow ()->SetSize (width, height);
-  const bool panel = show_model_panel_ && !result_.models.empty ();
+  viewer.getRenderWindow()->SetSize (width, height);
+  const bool panel = show_model_panel_ && !result_.models.empty();
   const double scene_right = panel ? 1.0 - MODEL_PANEL_WIDTH : 1.0;
   int viewport = 0;
   viewer.createViewPort (0.0, 0.0, scene_right, 1.0, viewport);
@@ -136,39 +147,45 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
 {
   using pcl::visualization::PCL_VISUALIZER_POINT_SIZE;
   viewer.setBackgroundColor (0.05, 0.05, 0.05, viewport);
-  const pcl::visualization::PointCloudColorHandlerRGBField<PointT> scene_colors (cloud_);
+  const pcl::visualization::PointCloudColorHandlerRGBField<PointT> scene_colors (
+      cloud_);
   viewer.addPointCloud<PointT> (cloud_, scene_colors, "scene", viewport);
-  viewer.setPointCloudRenderingProperties (PCL_VISUALIZER_POINT_SIZE,
-                                           std::max (1.0, std::ceil (scale)), "scene");
+  viewer.setPointCloudRenderingProperties (
+      PCL_VISUALIZER_POINT_SIZE, std::max (1.0, std::ceil (scale)), "scene");
 
-  Eigen::Vector3f instances_sum = Eigen::Vector3f::Zero ();
+  const int frames_viewport = detail::addOverlayLayer (viewer, viewport);
+  Eigen::Vector3f instances_sum = Eigen::Vector3f::Zero();
   std::size_t instances = 0;
-  for (std::size_t m = 0; m < result_.models.size (); ++m) {
+  for (std::size_t m = 0; m < result_.models.size(); ++m) {
     const ObjectColor color = objectColor (m);
     const ObjectModel& model = result_.models[m];
-    for (std::size_t i = 0; i < model.instances.size (); ++i) {
+    for (std::size_t i = 0; i < model.instances.size(); ++i) {
       const Eigen::Matrix4f& pose = model.instances[i].pose;
       const std::string suffix = std::to_string (m) + "_" + std::to_string (i);
-      const auto points = detail::posedPoints (model.landmarks, pose, detail::kTowardsCamera);
+      const auto points =
+          detail::posedPoints (model.landmarks, pose, detail::kTowardsCamera);
       const pcl::visualization::PointCloudColorHandlerCustom<pcl::PointXYZ> colors (
           points, color.r, color.g, color.b);
-      viewer.addPointCloud<pcl::PointXYZ> (points, colors, "landmarks_" + suffix, viewport);
+      viewer.addPointCloud<pcl::PointXYZ> (
+          points, colors, "landmarks_" + suffix, viewport);
       viewer.setPointCloudRenderingProperties (PCL_VISUALIZER_POINT_SIZE,
                                                detail::landmarkPointSize (scale),
                                                "landmarks_" + suffix);
-      viewer.addCoordinateSystem (detail::kFrameAxes, Eigen::Affine3f (pose), "frame_" + suffix,
-                                  viewport);
-      instances_sum += pose.topRightCorner<3, 1> ();
+      viewer.addCoordinateSystem (detail::kFrameAxes,
+                                  Eigen::Affine3f (pose),
+                                  "frame_" + suffix,
+                                  frames_viewport);
+      instances_sum += pose.topRightCorner<3, 1>();
       ++instances;
     }
   }
-  if (show_matches_ && result_.keypoints && !result_.matches.empty ()) {
-    const auto keypoints = detail::posedPoints (*result_.keypoints, Eigen::Matrix4f::Identity (),
-                                                detail::kTowardsCamera);
-    viewer.addCorrespondences<pcl::PointXYZ> (keypoints, keypoints, result_.matches, "matches",
-                                              viewport);
-    viewer.setShapeRenderingProperties (pcl::visualization::PCL_VISUALIZER_COLOR, 1.0, 1.0, 0.6,
-                                        "matches", viewport);
+  if (show_matches_ && result_.keypoints && !result_.matches.empty()) {
+    const auto keypoints = detail::posedPoints (
+        *result_.keypoints, Eigen::Matrix4f::Identity(), detail::kTowardsCamera);
+    viewer.addCorrespondences<pcl::PointXYZ> (
+        keypoints, keypoints, result_.matches, "matches", viewport);
+    viewer.setShapeRenderingProperties (
+        pcl::visualization::PCL_VISUALIZER_COLOR, 1.0, 1.0, 0.6, "matches", viewport);
   }
 
   if (!setCameraView (viewer,
@@ -179,14 +196,14 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
     return false;
   if (!has_viewpoint_)
     return true;
-  Eigen::Vector3f target = Eigen::Vector3f::Zero ();
+  Eigen::Vector3f target = Eigen::Vector3f::Zero();
   if (instances > 0)
     target = instances_sum / static_cast<float> (instances);
   else {
     std::size_t finite = 0;
     for (const auto& point : cloud_->points)
       if (pcl::isFinite (point)) {
-        target += point.getVector3fMap ();
+        target += point.getVector3fMap();
         ++finite;
       }
     target /= static_cast<float> (std::max<std::size_t> (finite, 1));

@@ -44,12 +44,16 @@ struct LineFit
 
 template <typename PointT>
 bool
-estimateIntrinsics (const pcl::PointCloud<PointT>& cloud, io::CameraIntrinsics& intrinsics)
+estimateIntrinsics (const pcl::PointCloud<PointT>& cloud,
+                    io::CameraIntrinsics& intrinsics)
 {
-  intrinsics = io::CameraIntrinsics ();
-  if (!cloud.isOrganized () || cloud.size () != std::size_t (cloud.width) * cloud.height) {
-    PCL_ERROR ("[mid::visualization::estimateIntrinsics] the cloud is not organized (%u x %u)\n",
-               cloud.width, cloud.height);
+  intrinsics = io::CameraIntrinsics();
+  if (!cloud.isOrganized() ||
+      cloud.size() != std::size_t (cloud.width) * cloud.height) {
+    PCL_ERROR ("[mid::visualization::estimateIntrinsics] the cloud is not organized "
+               "(%u x %u)\n",
+               cloud.width,
+               cloud.height);
     return false;
   }
   detail::LineFit columns, rows;
@@ -62,10 +66,12 @@ estimateIntrinsics (const pcl::PointCloud<PointT>& cloud, io::CameraIntrinsics& 
       rows.add (static_cast<double> (point.y / point.z), static_cast<double> (v));
     }
   io::CameraIntrinsics estimate;
-  if (!columns.solve (estimate.fx, estimate.cx) || !rows.solve (estimate.fy, estimate.cy) ||
-      !(estimate.fx > 0.0) || !(estimate.fy > 0.0)) {
-    PCL_ERROR ("[mid::visualization::estimateIntrinsics] the finite points give no pinhole "
-               "camera (too few, or not spread over several columns and rows)\n");
+  if (!columns.solve (estimate.fx, estimate.cx) ||
+      !rows.solve (estimate.fy, estimate.cy) || !(estimate.fx > 0.0) ||
+      !(estimate.fy > 0.0)) {
+    PCL_ERROR (
+        "[mid::visualization::estimateIntrinsics] the finite points give no pinhole "
+        "camera (too few, or not spread over several columns and rows)\n");
     return false;
   }
   intrinsics = estimate;

@@ -19,7 +19,8 @@ template <typename PointT>
 cv::Mat
 organizedCloudToImage (const pcl::PointCloud<PointT>& cloud)
 {
-  cv::Mat image (static_cast<int> (cloud.height), static_cast<int> (cloud.width), CV_8UC3);
+  cv::Mat image (
+      static_cast<int> (cloud.height), static_cast<int> (cloud.width), CV_8UC3);
   for (int v = 0; v < image.rows; ++v) {
     auto* row = image.ptr<cv::Vec3b> (v);
     for (int u = 0; u < image.cols; ++u) {
@@ -41,28 +42,38 @@ drawInstance (const std::vector<cv::Point2f>& pixels,
 
 template <typename PointT>
 bool
-renderOverlay (const pcl::PointCloud<PointT>& cloud, const DiscoveryResult& result, cv::Mat& image)
+renderOverlay (const pcl::PointCloud<PointT>& cloud,
+               const DiscoveryResult& result,
+               cv::Mat& image)
 {
-  image.release ();
-  if (!cloud.isOrganized () || cloud.size () != std::size_t (cloud.width) * cloud.height) {
-    PCL_ERROR ("[mid::visualization::renderOverlay] the cloud is not organized (%u x %u)\n",
-               cloud.width, cloud.height);
+  image.release();
+  if (!cloud.isOrganized() ||
+      cloud.size() != std::size_t (cloud.width) * cloud.height) {
+    PCL_ERROR (
+        "[mid::visualization::renderOverlay] the cloud is not organized (%u x %u)\n",
+        cloud.width,
+        cloud.height);
     return false;
   }
   cv::Mat drawn = detail::organizedCloudToImage (cloud);
-  for (std::size_t m = 0; m < result.models.size (); ++m) {
+  for (std::size_t m = 0; m < result.models.size(); ++m) {
     const ObjectColor color = objectColor (m);
     const auto& instances = result.models[m].instances;
-    for (std::size_t i = 0; i < instances.size (); ++i) {
+    for (std::size_t i = 0; i < instances.size(); ++i) {
       std::vector<cv::Point2f> pixels;
       for (const auto k : instances[i].keypoints) {
-        if (k < 0 || static_cast<std::size_t> (k) >= result.image_keypoints.size ()) {
-          PCL_ERROR ("[mid::visualization::renderOverlay] keypoint %d of object %zu, instance "
-                     "%zu has no image position (%zu image keypoints)\n",
-                     static_cast<int> (k), m, i, result.image_keypoints.size ());
+        if (k < 0 || static_cast<std::size_t> (k) >= result.image_keypoints.size()) {
+          PCL_ERROR (
+              "[mid::visualization::renderOverlay] keypoint %d of object %zu, instance "
+              "%zu has no image position (%zu image keypoints)\n",
+              static_cast<int> (k),
+              m,
+              i,
+              result.image_keypoints.size());
           return false;
         }
-        const ImageKeypoint& keypoint = result.image_keypoints[static_cast<std::size_t> (k)];
+        const ImageKeypoint& keypoint =
+            result.image_keypoints[static_cast<std::size_t> (k)];
         pixels.emplace_back (keypoint.u, keypoint.v);
       }
       detail::drawInstance (pixels,
@@ -89,12 +100,13 @@ saveOverlay (const std::string& path,
     written = cv::imwrite (path, image);
   }
   catch (const cv::Exception& error) {
-    PCL_ERROR ("[mid::visualization::saveOverlay] cannot write '%s': %s\n", path.c_str (),
-               error.what ());
+    PCL_ERROR ("[mid::visualization::saveOverlay] cannot write '%s': %s\n",
+               path.c_str(),
+               error.what());
     return false;
   }
   if (!written) {
-    PCL_ERROR ("[mid::visualization::saveOverlay] cannot write '%s'\n", path.c_str ());
+    PCL_ERROR ("[mid::visualization::saveOverlay] cannot write '%s'\n", path.c_str());
     return false;
   }
   return true;

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The synthetic benchmark (doc/benchmark.md): writes a fixed dataset of the six scenarios with
+# pcl_multi_instance_bench_synth, runs pcl_multi_instance_discovery -json on every frame, and
+# prints the Table-2-style report of pcl_multi_instance_eval.
+#   scripts/benchmark.sh
+# Settings, from the environment (the defaults give the published benchmark):
+#   MID_BUILD_DIR               build folder holding apps/ (build); built first if an app is
+#                               missing (configured as Release if it has no CMakeCache.txt)
+#   MID_BENCHMARK_OUT           where dataset/, results/ and report.md go, replaced
+#                               (MID_BUILD_DIR/benchmark)
+#   MID_BENCHMARK_FRAMES        frames per scenario (20)
+#   MID_BENCHMARK_SCENARIOS     comma-separated scenarios (S-ez,S-d,M-ez,M-d,rows,none)
+#   MID_BENCHMARK_SEED          seed of the dataset (1)
+#   MID_BENCHMARK_SUPERSAMPLING colour rays per pixel along each axis (3)
+#   MID_JOBS                    discovery runs in parallel, and build jobs (2)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+BUILD_DIR=${MID_BUILD_DIR:-build}
+OUT=${MID_BENCHMARK_OUT:-$BUILD_DIR/benchmark}
+FRAMES=${MID_BENCHMARK_FRAMES:-20}
+SCENARIOS=${MID_BENCHMARK_SCENARIOS:-S-ez,S-d,M-ez,M-d,rows,none}
+SEED=${MID_BENCHMARK_SEED:-1}
+SUPERSAMPLING=${MID_BENCHMARK_SUPERSAMPLING:-3}
+JOBS=${MID_JOBS:-2}
+APPS=$BUILD_DIR/apps
+TARGETS=(pcl_multi_instance_bench_synth pcl_multi_instance_discovery pcl_multi_instance_eval)
+
+for target in "${TARGETS[@]}"; do
+  if [ ! -x "$APPS/$target" ]; then
+    echo "=== building the apps in $BUILD_DIR"
+    [ -f "$BUILD_DIR/CMakeCache.txt" ] || cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target "${TARGETS[@]}"
+    break
+  fi
+done
+
+start=$(date +%s)
+rm -rf "$OUT/dataset" "$OUT/results" "$OUT/report.md"
+mkdir -p "$OUT/results"
+
+echo "=== dataset: $SCENARIOS, $FRAMES frames each, seed $SEED"
+"$APPS/pcl_multi_instance_bench_synth" -texture_dir data/textures -out_dir "$OUT/dataset" \
+  -frames "$FRAMES" -seed "$SEED" -scenarios "$SCENARIOS" -supersampling "$SUPERSAMPLING"
+generated=$(date +%s)
+
+# One frame: OUT/dataset/<scene>/pcd/<image>.pcd -> OUT/results/<scene>/<image>.json (+ .log).
+run_discovery() {
+  local pcd=$1 scene image
+  scene=$(basename "$(dirname "$(dirname "$pcd")")")
+  image=$(basename "$pcd" .pcd)
+  mkdir -p "$OUT/results/$scene"
+  if ! "$APPS/pcl_multi_instance_discovery" "$pcd" -json "$OUT/results/$scene/$image.json" \
+       > "$OUT/results/$scene/$image.log" 2>&1; then
+    echo "discovery failed on $pcd:" >&2
+    cat "$OUT/results/$scene/$image.log" >&2
+    return 1
+  fi
+}
+export -f run_discovery
+export OUT APPS
+
+count=$(find "$OUT/dataset" -path '*/pcd/*.pcd' | wc -l)
+echo "=== discovery on $count frames ($JOBS at a time)"
+find "$OUT/dataset" -path '*/pcd/*.pcd' -print0 | sort -z |
+  xargs -0 -n 1 -P "$JOBS" bash -c 'run_discovery "$1"' _
+discovered=$(date +%s)
+
+echo "=== evaluation"
+"$APPS/pcl_multi_instance_eval" "$OUT/dataset" "$OUT/results" -report "$OUT/report.md"
+end=$(date +%s)
+echo "=== $count frames in $((end - start)) s (dataset $((generated - start)) s," \
+     "discovery $((discovered - generated)) s, evaluation $((end - discovered)) s);" \
+     "report in $OUT/report.md"

@@ -1,0 +1,25 @@
+# Runs scripts/benchmark.sh on two tiny frames (one S-ez, one M-d; one colour ray per pixel):
+# dataset generation, discovery on every frame and the evaluation report, end to end.
+# Variables: SCRIPT (scripts/benchmark.sh), BUILD_DIR (holding apps/), WORK_DIR (emptied first).
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} -E env MID_BUILD_DIR=${BUILD_DIR}
+                        MID_BENCHMARK_OUT=${WORK_DIR} MID_BENCHMARK_FRAMES=1
+                        MID_BENCHMARK_SCENARIOS=S-ez,M-d MID_BENCHMARK_SUPERSAMPLING=1
+                        MID_JOBS=1 bash ${SCRIPT}
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "benchmark.sh failed (${result}):\n${output}\n${error}")
+endif()
+foreach(row "\\| S-ez +\\| +1 \\|" "\\| M-d +\\| +1 \\|" "\\| total +\\| +2 \\|")
+  if(NOT output MATCHES "${row}")
+    message(FATAL_ERROR "the report lacks a row matching '${row}':\n${output}")
+  endif()
+endforeach()
+foreach(name report.md results/000000/000000.json results/000001/000000.json)
+  if(NOT EXISTS ${WORK_DIR}/${name})
+    message(FATAL_ERROR "${name} was not written:\n${output}")
+  endif()
+endforeach()
+if(output MATCHES "no result file")
+  message(FATAL_ERROR "a frame had no result:\n${output}")
+endif()
