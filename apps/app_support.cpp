@@ -25,7 +25,8 @@ printSceneInputHelp ()
   print_info ("  SCENE.pcd           organized PCD with x y z rgb(a), metres\n");
   print_info ("  -rgb FILE           color image (PNG/JPG), with -depth\n");
   print_info ("  -depth FILE         16-bit depth PNG registered to the color image\n");
-  print_info ("  -fx -fy -cx -cy     pinhole intrinsics in pixels (required with -rgb)\n");
+  print_info (
+      "  -fx -fy -cx -cy     pinhole intrinsics in pixels (required with -rgb)\n");
   print_info ("  -depth_scale S      metres per depth unit (default 0.001)\n");
 }
 
@@ -40,23 +41,24 @@ parseSceneInput (int argc, char** argv, SceneInput& input)
       pcd_indices.push_back (i);
   parse_argument (argc, argv, "-rgb", input.color_path);
   parse_argument (argc, argv, "-depth", input.depth_path);
-  const bool rgbd = !input.color_path.empty () || !input.depth_path.empty ();
-  if (pcd_indices.size () + (rgbd ? 1 : 0) != 1) {
+  const bool rgbd = !input.color_path.empty() || !input.depth_path.empty();
+  if (pcd_indices.size() + (rgbd ? 1 : 0) != 1) {
     print_error ("Give exactly one input: one SCENE.pcd, or -rgb and -depth.\n");
     return false;
   }
   if (!rgbd) {
-    input.pcd_path = argv[pcd_indices.front ()];
+    input.pcd_path = argv[pcd_indices.front()];
     return true;
   }
-  if (input.color_path.empty () || input.depth_path.empty ()) {
+  if (input.color_path.empty() || input.depth_path.empty()) {
     print_error ("-rgb and -depth must be given together.\n");
     return false;
   }
-  const bool has_intrinsics = parse_argument (argc, argv, "-fx", input.intrinsics.fx) >= 0 &&
-                              parse_argument (argc, argv, "-fy", input.intrinsics.fy) >= 0 &&
-                              parse_argument (argc, argv, "-cx", input.intrinsics.cx) >= 0 &&
-                              parse_argument (argc, argv, "-cy", input.intrinsics.cy) >= 0;
+  const bool has_intrinsics =
+      parse_argument (argc, argv, "-fx", input.intrinsics.fx) >= 0 &&
+      parse_argument (argc, argv, "-fy", input.intrinsics.fy) >= 0 &&
+      parse_argument (argc, argv, "-cx", input.intrinsics.cx) >= 0 &&
+      parse_argument (argc, argv, "-cy", input.intrinsics.cy) >= 0;
   if (!has_intrinsics) {
     print_error ("-rgb/-depth input needs the intrinsics -fx -fy -cx -cy.\n");
     return false;
@@ -68,7 +70,7 @@ parseSceneInput (int argc, char** argv, SceneInput& input)
 bool
 loadScene (const SceneInput& input, pcl::PointCloud<PointT>& cloud)
 {
-  if (!input.pcd_path.empty ())
+  if (!input.pcd_path.empty())
     return io::loadOrganizedPCD (input.pcd_path, cloud);
   return io::loadRGBD (input.color_path, input.depth_path, input.intrinsics, cloud);
 }
@@ -78,56 +80,61 @@ ResultFiles::stage (const std::string& json_path, const std::string& model_prefi
 {
   json_path_ = json_path;
   model_prefix_ = model_prefix;
-  if (!json_path.empty () && (json_temporary_ = files_.stage (json_path)).empty ())
+  if (!json_path.empty() && (json_temporary_ = files_.stage (json_path)).empty())
     return false;
   // The model files are staged when written; check their folder now.
-  return model_prefix.empty () || !io::StagedFiles ().stage (model_prefix + "0.json").empty ();
+  return model_prefix.empty() ||
+         !io::StagedFiles().stage (model_prefix + "0.json").empty();
 }
 
 bool
 ResultFiles::write (const DiscoveryResult& result, const std::string& input_name)
 {
-  for (std::size_t m = 0; !model_prefix_.empty () && m < result.models.size (); ++m)
-    if (!saveObjectModel (model_prefix_ + std::to_string (m) + ".json", result.models[m], &files_))
+  for (std::size_t m = 0; !model_prefix_.empty() && m < result.models.size(); ++m)
+    if (!saveObjectModel (
+            model_prefix_ + std::to_string (m) + ".json", result.models[m], &files_))
       return false;
-  if (!json_path_.empty ()) {
+  if (!json_path_.empty()) {
     std::ofstream json (json_temporary_);
     json << formatDiscoveryJson (result, input_name);
-    json.close ();
+    json.close();
     if (!json) {
-      print_error ("Could not write '%s'.\n", json_path_.c_str ());
+      print_error ("Could not write '%s'.\n", json_path_.c_str());
       return false;
     }
   }
-  return files_.commit ();
+  return files_.commit();
 }
 
 void
-printResult (const pcl::PointCloud<PointT>& cloud, const DiscoveryResult& result, double load_ms)
+printResult (const pcl::PointCloud<PointT>& cloud,
+             const DiscoveryResult& result,
+             double load_ms)
 {
   pcl::console::print_highlight ("Scene: ");
   print_value ("%u x %u", cloud.width, cloud.height);
   print_info (" points\nkeypoints: ");
-  print_value ("%zu", result.keypoints ? result.keypoints->size () : 0);
+  print_value ("%zu", result.keypoints ? result.keypoints->size() : 0);
   print_info (" (valid depth and normal)\nmatches:   ");
-  print_value ("%zu", result.matches.size ());
+  print_value ("%zu", result.matches.size());
   print_info ("\ntriplets:  ");
   print_value ("%zu", result.triplets);
   print_info ("\nclusters:  ");
   print_value ("%zu", result.clusters);
   print_info ("\nobjects:   ");
-  print_value ("%zu", result.models.size ());
+  print_value ("%zu", result.models.size());
   print_info ("\n");
-  for (std::size_t m = 0; m < result.models.size (); ++m) {
+  for (std::size_t m = 0; m < result.models.size(); ++m) {
     print_info ("  object %zu: ", m);
-    print_value ("%zu", result.models[m].instances.size ());
-    print_info (" instances, %zu landmarks, diameter %.3f m\n", result.models[m].landmarks.size (),
+    print_value ("%zu", result.models[m].instances.size());
+    print_info (" instances, %zu landmarks, diameter %.3f m\n",
+                result.models[m].landmarks.size(),
                 static_cast<double> (result.models[m].diameter));
   }
   print_info ("timing_ms: load ");
   print_value ("%.1f", load_ms);
   for (const auto& [stage, ms] : result.timing_ms) {
-    print_info (", %s ", stage.c_str ());
+    print_info (", %s ", stage.c_str());
     print_value ("%.1f", ms);
   }
   print_info ("\n");

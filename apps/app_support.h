@@ -27,7 +27,10 @@ struct SceneInput
 
   /** \brief The file that names the scene (the PCD or the color image). */
   const std::string&
-  name () const { return pcd_path.empty () ? color_path : pcd_path; }
+  name () const
+  {
+    return pcd_path.empty() ? color_path : pcd_path;
+  }
 };
 
 /** \brief Print the help lines of the scene options. */
@@ -59,7 +62,10 @@ public:
     * missing or not writable
     */
   std::string
-  stageFile (const std::string& path) { return files_.stage (path); }
+  stageFile (const std::string& path)
+  {
+    return files_.stage (path);
+  }
 
   /** \brief Write and commit everything; false after a one-line error. */
   bool
@@ -74,7 +80,9 @@ private:
 
 /** \brief Print the counts, objects and timings of a result. */
 void
-printResult (const pcl::PointCloud<PointT>& cloud, const DiscoveryResult& result, double load_ms);
+printResult (const pcl::PointCloud<PointT>& cloud,
+             const DiscoveryResult& result,
+             double load_ms);
 
 } // namespace apps
 } // namespace mid

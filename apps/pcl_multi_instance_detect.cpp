@@ -41,25 +41,34 @@ void
 printHelp (const char* program)
 {
   const Options d;
-  print_info ("Find the instances of a discovered object model in a new RGB-D frame.\n\n");
+  print_info (
+      "Find the instances of a discovered object model in a new RGB-D frame.\n\n");
   print_info ("Usage: %s MODEL.json SCENE.pcd [options]\n", program);
-  print_info ("   or: %s MODEL.json -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C -cy C\n\n",
+  print_info ("   or: %s MODEL.json -rgb COLOR.png -depth DEPTH.png -fx F -fy F -cx C "
+              "-cy C\n\n",
               program);
-  print_info ("  MODEL.json          a model written by pcl_multi_instance_discovery -models\n");
-  mid::apps::printSceneInputHelp ();
-  print_info ("Output:\n  -json FILE          write the result as JSON (same format as discovery)\n");
-  mid::apps::VisualOutputs::printHelp ();
+  print_info ("  MODEL.json          a model written by pcl_multi_instance_discovery "
+              "-models\n");
+  mid::apps::printSceneInputHelp();
+  print_info ("Output:\n  -json FILE          write the result as JSON (same format as "
+              "discovery)\n");
+  mid::apps::VisualOutputs::printHelp();
   print_info ("Parameters:\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
     print_info ("  %-19s %s (default ", option, meaning);
     print_value ("%g", value);
     print_info (")\n");
   };
-  line ("-max_desc_dist D", "largest SIFT descriptor distance of a match",
+  line ("-max_desc_dist D",
+        "largest SIFT descriptor distance of a match",
         static_cast<double> (d.max_descriptor_distance));
-  line ("-inlier D", "RANSAC inlier threshold, metres", static_cast<double> (d.inlier_threshold));
+  line ("-inlier D",
+        "RANSAC inlier threshold, metres",
+        static_cast<double> (d.inlier_threshold));
   line ("-min_inliers N", "RANSAC minimum inliers", d.min_inliers);
-  line ("-min_ratio R", "RANSAC minimum inlier ratio", static_cast<double> (d.min_inlier_ratio));
+  line ("-min_ratio R",
+        "RANSAC minimum inlier ratio",
+        static_cast<double> (d.min_inlier_ratio));
   line ("-iterations N", "RANSAC hypotheses per detection", d.iterations);
   line ("-seed S", "seed of the random draws", d.seed);
 }
@@ -68,13 +77,14 @@ bool
 parseOptions (int argc, char** argv, Options& options)
 {
   using pcl::console::parse_argument;
-  for (int i = 1; i < argc && options.model_path.empty (); ++i) {
+  for (int i = 1; i < argc && options.model_path.empty(); ++i) {
     const std::string argument = argv[i];
-    if (argument.size () > 5 && argument.compare (argument.size () - 5, 5, ".json") == 0 &&
+    if (argument.size() > 5 &&
+        argument.compare (argument.size() - 5, 5, ".json") == 0 &&
         std::string (argv[i - 1]) != "-json")
       options.model_path = argument;
   }
-  if (options.model_path.empty ()) {
+  if (options.model_path.empty()) {
     print_error ("Give the model file MODEL.json first.\n");
     return false;
   }
@@ -89,7 +99,8 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-iterations", options.iterations);
   parse_argument (argc, argv, "-seed", options.seed);
   if (options.min_inliers < 3) {
-    print_error ("Invalid parameter: min_inliers is %d, must be >= 3.\n", options.min_inliers);
+    print_error ("Invalid parameter: min_inliers is %d, must be >= 3.\n",
+                 options.min_inliers);
     return false;
   }
   return true;
@@ -110,30 +121,30 @@ main (int argc, char** argv)
     return 1;
 
   pcl::StopWatch watch;
-  auto model = std::make_shared<mid::ObjectModel> ();
+  auto model = std::make_shared<mid::ObjectModel>();
   if (!mid::loadObjectModel (options.model_path, *model))
     return 1;
-  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>>();
   if (!mid::apps::loadScene (options.scene, *cloud))
     return 1;
-  const double load_ms = watch.getTime ();
+  const double load_ms = watch.getTime();
   mid::apps::ResultFiles outputs;
   if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs))
     return 1;
 
   pcl::StopWatch total;
-  watch.reset ();
+  watch.reset();
   mid::DiscoveryResult result;
   mid::SIFTKeypointExtractor<PointT> extractor;
   extractor.setInputCloud (cloud);
-  result.keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  result.descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  result.keypoints = pcl::make_shared<mid::KeypointCloud>();
+  result.descriptors = pcl::make_shared<mid::SIFTDescriptorCloud>();
   if (!extractor.compute (*result.keypoints, *result.descriptors))
     return 1;
-  result.image_keypoints = extractor.getImageKeypoints ();
-  result.timing_ms.emplace_back ("features", watch.getTime ());
+  result.image_keypoints = extractor.getImageKeypoints();
+  result.timing_ms.emplace_back ("features", watch.getTime());
 
-  watch.reset ();
+  watch.reset();
   mid::ModelInstanceDetector detector;
   detector.setModel (model);
   detector.setInputKeypoints (result.keypoints);
@@ -146,13 +157,14 @@ main (int argc, char** argv)
   detector.setSeed (options.seed);
   if (!detector.detect (model->instances))
     return 1;
-  result.timing_ms.emplace_back ("detection", watch.getTime ());
-  result.timing_ms.emplace_back ("total", total.getTime ());
-  if (!model->instances.empty ())
+  result.timing_ms.emplace_back ("detection", watch.getTime());
+  result.timing_ms.emplace_back ("total", total.getTime());
+  if (!model->instances.empty())
     result.models.push_back (*model);
 
   mid::apps::printResult (*cloud, result, load_ms);
-  if (!options.pictures.write (cloud, result) || !outputs.write (result, options.scene.name ()))
+  if (!options.pictures.write (cloud, result) ||
+      !outputs.write (result, options.scene.name()))
     return 1;
   return options.pictures.show (cloud, result) ? 0 : 1;
 }

@@ -25,15 +25,22 @@ namespace fs = std::filesystem;
 void
 printHelp (const char* program)
 {
-  print_info ("Score discovery results against BOP ground truth (Abbeloos et al. 3DV 2017 rules).\n\n");
-  print_info ("Usage: %s DATASET_DIR RESULTS_DIR [-report FILE] [-min_inside F]\n\n", program);
-  print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with scene_gt.json,\n");
-  print_info ("                scene_gt_info.json and mask_visib/; an optional scenarios.json maps\n");
+  print_info ("Score discovery results against BOP ground truth (Abbeloos et al. 3DV "
+              "2017 rules).\n\n");
+  print_info ("Usage: %s DATASET_DIR RESULTS_DIR [-report FILE] [-min_inside F]\n\n",
+              program);
+  print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with "
+              "scene_gt.json,\n");
+  print_info ("                scene_gt_info.json and mask_visib/; an optional "
+              "scenarios.json maps\n");
   print_info ("                a scene folder name to its scenario name\n");
-  print_info ("  RESULTS_DIR   <scene>/<image>.json: results of pcl_multi_instance_discovery -json\n");
-  print_info ("                (a missing result counts as an empty one and is reported)\n");
+  print_info ("  RESULTS_DIR   <scene>/<image>.json: results of "
+              "pcl_multi_instance_discovery -json\n");
+  print_info (
+      "                (a missing result counts as an empty one and is reported)\n");
   print_info ("  -report FILE  also write the report (markdown table) to FILE\n");
-  print_info ("  -min_inside F share of an instance's keypoints that must lie on the annotated\n");
+  print_info ("  -min_inside F share of an instance's keypoints that must lie on the "
+              "annotated\n");
   print_info ("                instance (default 0.9, the paper's)\n");
 }
 
@@ -56,11 +63,13 @@ readScenarios (const fs::path& dataset)
   try {
     nlohmann::json document;
     file >> document;
-    for (const auto& [scene, name] : document.items ())
-      names[scene] = name.get<std::string> ();
+    for (const auto& [scene, name] : document.items())
+      names[scene] = name.get<std::string>();
   }
   catch (const std::exception& error) {
-    print_error ("scenarios.json is not valid: %s; scene folders are used as scenarios.\n", error.what ());
+    print_error (
+        "scenarios.json is not valid: %s; scene folders are used as scenarios.\n",
+        error.what());
   }
   return names;
 }
@@ -80,7 +89,8 @@ main (int argc, char** argv)
   pcl::console::parse_argument (argc, argv, "-report", report_path);
   pcl::console::parse_argument (argc, argv, "-min_inside", min_inside);
   if (!(min_inside > 0.0 && min_inside <= 1.0)) {
-    print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n", min_inside);
+    print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n",
+                 min_inside);
     return 1;
   }
   if (!fs::is_directory (dataset) || !fs::is_directory (results)) {
@@ -88,48 +98,50 @@ main (int argc, char** argv)
     return 1;
   }
   mid::io::StagedFiles outputs;
-  const std::string report_temporary = report_path.empty () ? std::string () : outputs.stage (report_path);
-  if (!report_path.empty () && report_temporary.empty ())
+  const std::string report_temporary =
+      report_path.empty() ? std::string() : outputs.stage (report_path);
+  if (!report_path.empty() && report_temporary.empty())
     return 1;
   const auto scenario_of = readScenarios (dataset);
   std::map<std::string, mid::evaluation::ScoreSummary> scenarios;
   std::size_t missing = 0;
   std::vector<fs::path> scenes;
   for (const auto& entry : fs::directory_iterator (dataset))
-    if (entry.is_directory () && fs::exists (entry.path () / "scene_gt.json"))
-      scenes.push_back (entry.path ());
-  std::sort (scenes.begin (), scenes.end ());
-  if (scenes.empty ()) {
+    if (entry.is_directory() && fs::exists (entry.path() / "scene_gt.json"))
+      scenes.push_back (entry.path());
+  std::sort (scenes.begin(), scenes.end());
+  if (scenes.empty()) {
     print_error ("'%s' holds no BOP scene folder (with scene_gt.json).\n", argv[1]);
     return 1;
   }
   for (const auto& scene_path : scenes) {
     mid::evaluation::GroundTruthScene truth;
-    if (!mid::evaluation::loadBopScene (scene_path.string (), truth))
+    if (!mid::evaluation::loadBopScene (scene_path.string(), truth))
       return 1;
-    const std::string scene = scene_path.filename ().string ();
+    const std::string scene = scene_path.filename().string();
     const auto named = scenario_of.find (scene);
-    auto& summary = scenarios[named != scenario_of.end () ? named->second : scene];
+    auto& summary = scenarios[named != scenario_of.end() ? named->second : scene];
     for (const auto& [image, frame] : truth) {
       const fs::path result_path = results / scene / imageName (image);
       mid::evaluation::DetectionResult result;
       if (!fs::exists (result_path))
         ++missing;
-      else if (!mid::evaluation::readDetectionResult (result_path.string (), result))
+      else if (!mid::evaluation::readDetectionResult (result_path.string(), result))
         return 1;
       summary.add (mid::evaluation::scoreFrame (frame, result, min_inside), result);
     }
   }
   const std::string report = mid::evaluation::formatReport (scenarios);
-  std::printf ("%s", report.c_str ());
+  std::printf ("%s", report.c_str());
   if (missing > 0)
-    print_info ("%zu frames had no result file and were scored as empty results.\n", missing);
-  if (!report_path.empty ()) {
+    print_info ("%zu frames had no result file and were scored as empty results.\n",
+                missing);
+  if (!report_path.empty()) {
     std::ofstream file (report_temporary);
     file << report;
-    file.close ();
-    if (!file || !outputs.commit ()) {
-      print_error ("Could not write '%s'.\n", report_path.c_str ());
+    file.close();
+    if (!file || !outputs.commit()) {
+      print_error ("Could not write '%s'.\n", report_path.c_str());
       return 1;
     }
   }

@@ -10,17 +10,21 @@ namespace {
 class Checker
 {
 public:
-  explicit Checker (std::string& problem) : problem_ (problem) { problem_.clear (); }
+  explicit Checker (std::string& problem) : problem_ (problem) { problem_.clear(); }
 
   void
   require (bool ok, const char* name, double value, const char* requirement)
   {
-    if (!ok && problem_.empty ())
-      problem_ = std::string (name) + " is " + std::to_string (value) + ", must be " + requirement;
+    if (!ok && problem_.empty())
+      problem_ = std::string (name) + " is " + std::to_string (value) + ", must be " +
+                 requirement;
   }
 
   bool
-  ok () const { return problem_.empty (); }
+  ok () const
+  {
+    return problem_.empty();
+  }
 
 private:
   std::string& problem_;
@@ -34,46 +38,95 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
   constexpr double pi = M_PI;
   Checker c (problem);
   c.require (p.max_keypoints >= 0, "max_keypoints", p.max_keypoints, ">= 0");
-  c.require (p.contrast_threshold > 0.0, "contrast_threshold", p.contrast_threshold, "> 0");
-  c.require (p.normal_radius > 0.0f, "normal_radius", static_cast<double> (p.normal_radius), "> 0");
-  c.require (p.max_descriptor_distance > 0.0f, "max_descriptor_distance",
-             static_cast<double> (p.max_descriptor_distance), "> 0");
-  c.require (p.min_keypoint_distance >= 0.0f, "min_keypoint_distance",
-             static_cast<double> (p.min_keypoint_distance), ">= 0");
-  c.require (p.max_distance_ratio > 0.0f && p.max_distance_ratio <= 1.0f, "max_distance_ratio",
-             static_cast<double> (p.max_distance_ratio), "in (0, 1]");
-  c.require (p.ppf_distance >= 0.0f, "ppf_distance", static_cast<double> (p.ppf_distance), ">= 0");
-  c.require (p.ppf_angle >= 0.0f && p.ppf_angle <= pi, "ppf_angle", static_cast<double> (p.ppf_angle),
-             "in [0, pi]");
-  c.require (p.min_edge_length > 0.0f, "min_edge_length", static_cast<double> (p.min_edge_length), "> 0");
-  c.require (p.max_edge_length >= p.min_edge_length, "max_edge_length",
-             static_cast<double> (p.max_edge_length), ">= min_edge_length");
-  c.require (p.min_triangle_angle >= 0.0f && p.min_triangle_angle < pi / 3.0, "min_triangle_angle",
-             static_cast<double> (p.min_triangle_angle), "in [0, pi/3)");
-  c.require (!std::isnan (p.overlap_distance), "overlap_distance",
-             static_cast<double> (p.overlap_distance), "a number");
-  c.require (p.triplets_per_keypoint >= 1, "triplets_per_keypoint", p.triplets_per_keypoint, ">= 1");
-  c.require (p.max_triplets >= 1, "max_triplets", static_cast<double> (p.max_triplets), ">= 1");
-  c.require (p.cluster_distance > 0.0f, "cluster_distance", static_cast<double> (p.cluster_distance),
+  c.require (
+      p.contrast_threshold > 0.0, "contrast_threshold", p.contrast_threshold, "> 0");
+  c.require (p.normal_radius > 0.0f,
+             "normal_radius",
+             static_cast<double> (p.normal_radius),
              "> 0");
-  c.require (p.min_cluster_size >= 1, "min_cluster_size", static_cast<double> (p.min_cluster_size),
+  c.require (p.max_descriptor_distance > 0.0f,
+             "max_descriptor_distance",
+             static_cast<double> (p.max_descriptor_distance),
+             "> 0");
+  c.require (p.min_keypoint_distance >= 0.0f,
+             "min_keypoint_distance",
+             static_cast<double> (p.min_keypoint_distance),
+             ">= 0");
+  c.require (p.max_distance_ratio > 0.0f && p.max_distance_ratio <= 1.0f,
+             "max_distance_ratio",
+             static_cast<double> (p.max_distance_ratio),
+             "in (0, 1]");
+  c.require (p.ppf_distance >= 0.0f,
+             "ppf_distance",
+             static_cast<double> (p.ppf_distance),
+             ">= 0");
+  c.require (p.ppf_angle >= 0.0f && p.ppf_angle <= pi,
+             "ppf_angle",
+             static_cast<double> (p.ppf_angle),
+             "in [0, pi]");
+  c.require (p.min_edge_length > 0.0f,
+             "min_edge_length",
+             static_cast<double> (p.min_edge_length),
+             "> 0");
+  c.require (p.max_edge_length >= p.min_edge_length,
+             "max_edge_length",
+             static_cast<double> (p.max_edge_length),
+             ">= min_edge_length");
+  c.require (p.min_triangle_angle >= 0.0f && p.min_triangle_angle < pi / 3.0,
+             "min_triangle_angle",
+             static_cast<double> (p.min_triangle_angle),
+             "in [0, pi/3)");
+  c.require (!std::isnan (p.overlap_distance),
+             "overlap_distance",
+             static_cast<double> (p.overlap_distance),
+             "a number");
+  c.require (p.triplets_per_keypoint >= 1,
+             "triplets_per_keypoint",
+             p.triplets_per_keypoint,
+             ">= 1");
+  c.require (p.max_triplets >= 1,
+             "max_triplets",
+             static_cast<double> (p.max_triplets),
+             ">= 1");
+  c.require (p.cluster_distance > 0.0f,
+             "cluster_distance",
+             static_cast<double> (p.cluster_distance),
+             "> 0");
+  c.require (p.min_cluster_size >= 1,
+             "min_cluster_size",
+             static_cast<double> (p.min_cluster_size),
              ">= 1");
   c.require (p.gc_size > 0.0, "gc_size", p.gc_size, "> 0");
   c.require (p.gc_threshold >= 3, "gc_threshold", p.gc_threshold, ">= 3");
   c.require (p.hough_bin_size > 0.0, "hough_bin_size", p.hough_bin_size, "> 0");
   c.require (p.hough_threshold > 0.0, "hough_threshold", p.hough_threshold, "> 0");
-  c.require (p.lrf_radius > 0.0f, "lrf_radius", static_cast<double> (p.lrf_radius), "> 0");
-  c.require (p.refinement_iterations >= 0, "refinement_iterations", p.refinement_iterations, ">= 0");
-  c.require (p.duplicate_angle >= 0.0f, "duplicate_angle", static_cast<double> (p.duplicate_angle), ">= 0");
-  c.require (p.duplicate_distance >= 0.0f, "duplicate_distance",
-             static_cast<double> (p.duplicate_distance), ">= 0");
-  c.require (p.inlier_threshold > 0.0f, "inlier_threshold", static_cast<double> (p.inlier_threshold),
+  c.require (
+      p.lrf_radius > 0.0f, "lrf_radius", static_cast<double> (p.lrf_radius), "> 0");
+  c.require (p.refinement_iterations >= 0,
+             "refinement_iterations",
+             p.refinement_iterations,
+             ">= 0");
+  c.require (p.duplicate_angle >= 0.0f,
+             "duplicate_angle",
+             static_cast<double> (p.duplicate_angle),
+             ">= 0");
+  c.require (p.duplicate_distance >= 0.0f,
+             "duplicate_distance",
+             static_cast<double> (p.duplicate_distance),
+             ">= 0");
+  c.require (p.inlier_threshold > 0.0f,
+             "inlier_threshold",
+             static_cast<double> (p.inlier_threshold),
              "> 0");
-  c.require (p.min_inliers >= 3, "min_inliers", static_cast<double> (p.min_inliers), ">= 3");
-  c.require (p.min_inlier_ratio >= 0.0f && p.min_inlier_ratio < 1.0f, "min_inlier_ratio",
-             static_cast<double> (p.min_inlier_ratio), "in [0, 1)");
-  c.require (p.ransac_iterations >= 1, "ransac_iterations", p.ransac_iterations, ">= 1");
-  return c.ok ();
+  c.require (
+      p.min_inliers >= 3, "min_inliers", static_cast<double> (p.min_inliers), ">= 3");
+  c.require (p.min_inlier_ratio >= 0.0f && p.min_inlier_ratio < 1.0f,
+             "min_inlier_ratio",
+             static_cast<double> (p.min_inlier_ratio),
+             "in [0, 1)");
+  c.require (
+      p.ransac_iterations >= 1, "ransac_iterations", p.ransac_iterations, ">= 1");
+  return c.ok();
 }
 
 } // namespace mid

@@ -1,7 +1,6 @@
-#include <mid/discovery/discovery_stages.h>
-
 #include "peer_grouping.h"
 
+#include <mid/discovery/discovery_stages.h>
 #include <mid/features/self_matcher.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/model_instance_detector.h>
@@ -22,7 +21,8 @@ namespace {
 
 /** A detector for one model with the pipeline's RANSAC parameters. */
 ModelInstanceDetector
-makeDetector (const DiscoveryParameters& p, const std::shared_ptr<const ObjectModel>& model)
+makeDetector (const DiscoveryParameters& p,
+              const std::shared_ptr<const ObjectModel>& model)
 {
   ModelInstanceDetector detector;
   detector.setModel (model);
@@ -39,7 +39,7 @@ makeDetector (const DiscoveryParameters& p, const std::shared_ptr<const ObjectMo
 void
 modelAsKeypoints (const ObjectModel& b, KeypointCloud& keypoints)
 {
-  keypoints.clear ();
+  keypoints.clear();
   for (const int l : b.descriptor_landmarks)
     keypoints.push_back (b.landmarks[static_cast<std::size_t> (l)]);
 }
@@ -48,33 +48,41 @@ modelAsKeypoints (const ObjectModel& b, KeypointCloud& keypoints)
   * first); on success j joins i. Returns false only on a detector error.
   */
 bool
-mergeModels (const DiscoveryParameters& p, const KeypointCloud& frame, ObjectModels& models)
+mergeModels (const DiscoveryParameters& p,
+             const KeypointCloud& frame,
+             ObjectModels& models)
 {
-  for (std::size_t i = 0; i < models.size (); ++i)
-    for (std::size_t j = i + 1; j < models.size ();) {
-      auto points = pcl::make_shared<KeypointCloud> ();
+  for (std::size_t i = 0; i < models.size(); ++i)
+    for (std::size_t j = i + 1; j < models.size();) {
+      auto points = pcl::make_shared<KeypointCloud>();
       modelAsKeypoints (models[i], *points);
       auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
-      ModelInstanceDetector detector = makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
+      ModelInstanceDetector detector =
+          makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
       detector.setInputKeypoints (points);
       detector.setInputDescriptors (descriptors);
       detector.setMaxInstances (1);
       ModelInstances found;
       if (!detector.detect (found))
         return false;
-      if (found.empty ()) {
+      if (found.empty()) {
         ++j;
         continue;
       }
       // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
       std::vector<std::pair<int, int>> same;
-      for (std::size_t o = 0; o < found.front ().keypoints.size (); ++o)
-        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (found.front ().keypoints[o])],
-                           found.front ().landmarks[o]);
-      mergeModel (models[i], models[j], found.front ().pose.inverse (), same, p.duplicate_angle,
+      for (std::size_t o = 0; o < found.front().keypoints.size(); ++o)
+        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (
+                               found.front().keypoints[o])],
+                           found.front().landmarks[o]);
+      mergeModel (models[i],
+                  models[j],
+                  found.front().pose.inverse(),
+                  same,
+                  p.duplicate_angle,
                   p.duplicate_distance);
       refineModel (models[i], frame, p.refinement_iterations);
-      models.erase (models.begin () + static_cast<std::ptrdiff_t> (j));
+      models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
     }
   return true;
 }
@@ -86,13 +94,14 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
   std::set<pcl::index_t> used;
   for (const auto& model : result.models)
     for (const auto& instance : model.instances)
-      used.insert (instance.keypoints.begin (), instance.keypoints.end ());
+      used.insert (instance.keypoints.begin(), instance.keypoints.end());
   for (auto& model : result.models) {
-    auto candidates = pcl::make_shared<pcl::Indices> ();
-    for (std::size_t k = 0; k < result.keypoints->size (); ++k)
+    auto candidates = pcl::make_shared<pcl::Indices>();
+    for (std::size_t k = 0; k < result.keypoints->size(); ++k)
       if (used.count (static_cast<pcl::index_t> (k)) == 0)
         candidates->push_back (static_cast<pcl::index_t> (k));
-    ModelInstanceDetector detector = makeDetector (p, std::make_shared<const ObjectModel> (model));
+    ModelInstanceDetector detector =
+        makeDetector (p, std::make_shared<const ObjectModel> (model));
     detector.setInputKeypoints (result.keypoints);
     detector.setInputDescriptors (result.descriptors);
     detector.setCandidates (candidates);
@@ -100,10 +109,14 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
     if (!detector.detect (found))
       return false;
     for (const auto& instance : found) {
-      addInstance (model, instance, *result.descriptors, p.duplicate_angle, p.duplicate_distance);
-      used.insert (instance.keypoints.begin (), instance.keypoints.end ());
+      addInstance (model,
+                   instance,
+                   *result.descriptors,
+                   p.duplicate_angle,
+                   p.duplicate_distance);
+      used.insert (instance.keypoints.begin(), instance.keypoints.end());
     }
-    if (!found.empty ())
+    if (!found.empty())
       refineModel (model, *result.keypoints, p.refinement_iterations);
   }
   return true;
@@ -111,7 +124,9 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
 
 /** Ours: the PPF triplet rejector, then DBSCAN in transformation space. */
 bool
-groupWithTriplets (const DiscoveryParameters& p, DiscoveryResult& result, TripletClusters& clusters)
+groupWithTriplets (const DiscoveryParameters& p,
+                   DiscoveryResult& result,
+                   TripletClusters& clusters)
 {
   pcl::StopWatch watch;
   CorrespondenceRejectorPPFTriplet rejector;
@@ -125,13 +140,13 @@ groupWithTriplets (const DiscoveryParameters& p, DiscoveryResult& result, Triple
   rejector.setMaxTripletsPerKeypoint (p.triplets_per_keypoint);
   rejector.setMaxTriplets (p.max_triplets);
   pcl::Correspondences remaining;
-  if (!result.matches.empty ())
+  if (!result.matches.empty())
     rejector.getRemainingCorrespondences (result.matches, remaining);
-  auto triplets = std::make_shared<const TripletMatches> (rejector.getTripletMatches ());
-  result.triplets = triplets->size ();
-  result.timing_ms.emplace_back ("triplets", watch.getTime ());
+  auto triplets = std::make_shared<const TripletMatches> (rejector.getTripletMatches());
+  result.triplets = triplets->size();
+  result.timing_ms.emplace_back ("triplets", watch.getTime());
 
-  watch.reset ();
+  watch.reset();
   TransformationSpaceClustering clustering;
   clustering.setInputCloud (result.keypoints);
   clustering.setSceneCloud (result.keypoints);
@@ -139,18 +154,19 @@ groupWithTriplets (const DiscoveryParameters& p, DiscoveryResult& result, Triple
   clustering.setClusterDistance (p.cluster_distance);
   clustering.setMinClusterSize (p.min_cluster_size);
   std::vector<pcl::Correspondences> groups;
-  if (!triplets->empty ())
+  if (!triplets->empty())
     clustering.cluster (groups);
-  clusters = clustering.getClusters ();
-  result.clusters = clusters.size ();
-  result.timing_ms.emplace_back ("clustering", watch.getTime ());
+  clusters = clustering.getClusters();
+  result.clusters = clusters.size();
+  result.timing_ms.emplace_back ("clustering", watch.getTime());
   return true;
 }
 
 } // namespace
 
 bool
-discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result,
+discoverFromKeypoints (const DiscoveryParameters& p,
+                       DiscoveryResult& result,
                        const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface)
 {
   if (!result.keypoints || !result.descriptors) {
@@ -159,7 +175,8 @@ discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result,
   }
   std::string problem;
   if (!validateDiscoveryParameters (p, problem)) {
-    PCL_ERROR ("[mid::discoverFromKeypoints] Invalid parameter: %s.\n", problem.c_str ());
+    PCL_ERROR ("[mid::discoverFromKeypoints] Invalid parameter: %s.\n",
+               problem.c_str());
     return false;
   }
   pcl::StopWatch watch;
@@ -172,23 +189,24 @@ discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result,
   matcher.setMutualCheck (p.mutual_check);
   if (!matcher.match (result.matches))
     return false;
-  result.timing_ms.emplace_back ("matching", watch.getTime ());
+  result.timing_ms.emplace_back ("matching", watch.getTime());
 
-  auto clusters = std::make_shared<TripletClusters> ();
+  auto clusters = std::make_shared<TripletClusters>();
   if (p.grouping == Grouping::triplets) {
     if (!groupWithTriplets (p, result, *clusters))
       return false;
   }
   else {
     result.timing_ms.emplace_back ("triplets", 0.0);
-    watch.reset ();
-    if (!detail::groupWithPeer (p, result.keypoints, surface, result.matches, *clusters))
+    watch.reset();
+    if (!detail::groupWithPeer (
+            p, result.keypoints, surface, result.matches, *clusters))
       return false;
-    result.clusters = clusters->size ();
-    result.timing_ms.emplace_back ("clustering", watch.getTime ());
+    result.clusters = clusters->size();
+    result.timing_ms.emplace_back ("clustering", watch.getTime());
   }
 
-  watch.reset ();
+  watch.reset();
   MultiInstanceModelBuilder builder;
   builder.setInputCloud (result.keypoints);
   builder.setInputDescriptors (result.descriptors);
@@ -197,14 +215,14 @@ discoverFromKeypoints (const DiscoveryParameters& p, DiscoveryResult& result,
   builder.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
   if (!builder.compute (result.models))
     return false;
-  result.timing_ms.emplace_back ("modeling", watch.getTime ());
+  result.timing_ms.emplace_back ("modeling", watch.getTime());
 
-  watch.reset ();
+  watch.reset();
   if (p.merge_models && !mergeModels (p, *result.keypoints, result.models))
     return false;
   if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
     return false;
-  result.timing_ms.emplace_back ("detection", watch.getTime ());
+  result.timing_ms.emplace_back ("detection", watch.getTime());
   return true;
 }
 

@@ -21,9 +21,11 @@ namespace detail {
   * \return false (with a PCL_ERROR) if the input is unusable
   */
 bool
-groupWithPeer (const DiscoveryParameters& p, const KeypointCloud::ConstPtr& keypoints,
+groupWithPeer (const DiscoveryParameters& p,
+               const KeypointCloud::ConstPtr& keypoints,
                const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-               const pcl::Correspondences& matches, TripletClusters& clusters);
+               const pcl::Correspondences& matches,
+               TripletClusters& clusters);
 
 } // namespace detail
 } // namespace mid

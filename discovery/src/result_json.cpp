@@ -38,7 +38,9 @@ quoted (const std::string& text)
 }
 
 void
-writeInstance (std::ostringstream& out, const ModelInstance& instance, const ImageKeypoints& image)
+writeInstance (std::ostringstream& out,
+               const ModelInstance& instance,
+               const ImageKeypoints& image)
 {
   out << "        {\"pose\": [";
   for (int r = 0; r < 4; ++r) {
@@ -48,9 +50,9 @@ writeInstance (std::ostringstream& out, const ModelInstance& instance, const Ima
     out << "]";
   }
   out << "],\n         \"keypoints\": [";
-  float u_min = std::numeric_limits<float>::max (), v_min = u_min;
-  float u_max = std::numeric_limits<float>::lowest (), v_max = u_max;
-  for (std::size_t o = 0; o < instance.keypoints.size (); ++o) {
+  float u_min = std::numeric_limits<float>::max(), v_min = u_min;
+  float u_max = std::numeric_limits<float>::lowest(), v_max = u_max;
+  for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
     const auto& kp = image[static_cast<std::size_t> (instance.keypoints[o])];
     out << (o > 0 ? ", " : "") << "[" << number (kp.u) << ", " << number (kp.v) << "]";
     u_min = std::min (u_min, kp.u);
@@ -59,8 +61,9 @@ writeInstance (std::ostringstream& out, const ModelInstance& instance, const Ima
     v_max = std::max (v_max, kp.v);
   }
   out << "],\n         \"bbox\": [";
-  if (!instance.keypoints.empty ())
-    out << number (u_min) << ", " << number (v_min) << ", " << number (u_max) << ", " << number (v_max);
+  if (!instance.keypoints.empty())
+    out << number (u_min) << ", " << number (v_min) << ", " << number (u_max) << ", "
+        << number (v_max);
   out << "],\n         \"rms_error\": " << number (instance.rms_error) << "}";
 }
 
@@ -71,29 +74,34 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
 {
   std::size_t instances = 0;
   for (const auto& model : result.models)
-    instances += model.instances.size ();
+    instances += model.instances.size();
   std::ostringstream out;
-  out << "{\n  \"format\": \"mid-discovery-result\",\n  \"version\": " << DISCOVERY_JSON_VERSION
-      << ",\n  \"input\": " << quoted (input) << ",\n  \"timing_ms\": {";
-  for (std::size_t i = 0; i < result.timing_ms.size (); ++i)
+  out << "{\n  \"format\": \"mid-discovery-result\",\n  \"version\": "
+      << DISCOVERY_JSON_VERSION << ",\n  \"input\": " << quoted (input)
+      << ",\n  \"timing_ms\": {";
+  for (std::size_t i = 0; i < result.timing_ms.size(); ++i)
     out << (i > 0 ? ", " : "") << quoted (result.timing_ms[i].first) << ": "
         << number (result.timing_ms[i].second);
-  out << "},\n  \"counts\": {\"keypoints\": " << (result.keypoints ? result.keypoints->size () : 0)
-      << ", \"matches\": " << result.matches.size () << ", \"triplets\": " << result.triplets
-      << ", \"clusters\": " << result.clusters << ", \"objects\": " << result.models.size ()
-      << ", \"instances\": " << instances << "},\n  \"objects\": [";
-  for (std::size_t m = 0; m < result.models.size (); ++m) {
+  out << "},\n  \"counts\": {\"keypoints\": "
+      << (result.keypoints ? result.keypoints->size() : 0)
+      << ", \"matches\": " << result.matches.size()
+      << ", \"triplets\": " << result.triplets << ", \"clusters\": " << result.clusters
+      << ", \"objects\": " << result.models.size() << ", \"instances\": " << instances
+      << "},\n  \"objects\": [";
+  for (std::size_t m = 0; m < result.models.size(); ++m) {
     const auto& model = result.models[m];
-    out << (m > 0 ? "," : "") << "\n    {\"id\": " << m << ", \"landmarks\": " << model.landmarks.size ()
-        << ", \"diameter\": " << number (model.diameter) << ",\n     \"instances\": [\n";
-    for (std::size_t i = 0; i < model.instances.size (); ++i) {
+    out << (m > 0 ? "," : "") << "\n    {\"id\": " << m
+        << ", \"landmarks\": " << model.landmarks.size()
+        << ", \"diameter\": " << number (model.diameter)
+        << ",\n     \"instances\": [\n";
+    for (std::size_t i = 0; i < model.instances.size(); ++i) {
       writeInstance (out, model.instances[i], result.image_keypoints);
-      out << (i + 1 < model.instances.size () ? ",\n" : "\n");
+      out << (i + 1 < model.instances.size() ? ",\n" : "\n");
     }
     out << "     ]}";
   }
-  out << (result.models.empty () ? "]\n}\n" : "\n  ]\n}\n");
-  return out.str ();
+  out << (result.models.empty() ? "]\n}\n" : "\n  ]\n}\n");
+  return out.str();
 }
 
 } // namespace mid

@@ -23,7 +23,7 @@ main (int argc, char** argv)
   }
 
   // 1. One organized RGB-D frame, in metres.
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>>();
   if (!mid::io::loadOrganizedPCD (argv[1], *cloud))
     return 1;
 
@@ -32,8 +32,8 @@ main (int argc, char** argv)
   extractor.setInputCloud (cloud);
   extractor.setContrastThreshold (0.04);
   extractor.setNormalRadius (0.015f);
-  auto keypoints = pcl::make_shared<mid::KeypointCloud> ();
-  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud> ();
+  auto keypoints = pcl::make_shared<mid::KeypointCloud>();
+  auto descriptors = pcl::make_shared<mid::SIFTDescriptorCloud>();
   if (!extractor.compute (*keypoints, *descriptors))
     return 1;
 
@@ -43,7 +43,7 @@ main (int argc, char** argv)
   matcher.setInputDescriptors (descriptors);
   matcher.setMaxDescriptorDistance (200.0f);
   matcher.setMinKeypointDistance (0.01f);
-  auto matches = pcl::make_shared<pcl::Correspondences> ();
+  auto matches = pcl::make_shared<pcl::Correspondences>();
   if (!matcher.match (*matches))
     return 1;
 
@@ -58,7 +58,8 @@ main (int argc, char** argv)
   rejector.setMaxTripletsPerKeypoint (10);
   pcl::Correspondences remaining;
   rejector.getRemainingCorrespondences (*matches, remaining);
-  auto triplets = std::make_shared<const mid::TripletMatches> (rejector.getTripletMatches ());
+  auto triplets =
+      std::make_shared<const mid::TripletMatches> (rejector.getTripletMatches());
 
   // 5. DBSCAN over the triplets' poses: each cluster is one pair of instances.
   mid::TransformationSpaceClustering clustering;
@@ -70,7 +71,8 @@ main (int argc, char** argv)
   mid::TransformationSpaceClustering::Transformations poses;
   std::vector<pcl::Correspondences> groups;
   clustering.recognize (poses, groups);
-  auto clusters = std::make_shared<const mid::TripletClusters> (clustering.getClusters ());
+  auto clusters =
+      std::make_shared<const mid::TripletClusters> (clustering.getClusters());
 
   // 6. One model per connected group of clusters, with every instance's pose.
   mid::MultiInstanceModelBuilder builder;
@@ -81,22 +83,23 @@ main (int argc, char** argv)
   if (!builder.compute (models))
     return 1;
 
-  std::cout << "keypoints " << keypoints->size () << ", matches " << matches->size ()
-            << ", triplets " << triplets->size () << ", clusters " << clusters->size ()
-            << ", objects " << models.size () << "\n";
-  const auto& image = extractor.getImageKeypoints ();
-  for (std::size_t m = 0; m < models.size (); ++m)
-    for (std::size_t i = 0; i < models[m].instances.size (); ++i) {
+  std::cout << "keypoints " << keypoints->size() << ", matches " << matches->size()
+            << ", triplets " << triplets->size() << ", clusters " << clusters->size()
+            << ", objects " << models.size() << "\n";
+  const auto& image = extractor.getImageKeypoints();
+  for (std::size_t m = 0; m < models.size(); ++m)
+    for (std::size_t i = 0; i < models[m].instances.size(); ++i) {
       const auto& instance = models[m].instances[i];
       float u = 0.0f, v = 0.0f;
       for (const auto k : instance.keypoints) {
         u += image[static_cast<std::size_t> (k)].u;
         v += image[static_cast<std::size_t> (k)].v;
       }
-      const auto n = static_cast<float> (instance.keypoints.size ());
-      std::cout << "object " << m << " instance " << i << " keypoints " << instance.keypoints.size ()
-                << " centre_pixel " << u / n << " " << v / n << " position "
-                << instance.pose.topRightCorner<3, 1> ().transpose () << "\n";
+      const auto n = static_cast<float> (instance.keypoints.size());
+      std::cout << "object " << m << " instance " << i << " keypoints "
+                << instance.keypoints.size() << " centre_pixel " << u / n << " "
+                << v / n << " position "
+                << instance.pose.topRightCorner<3, 1>().transpose() << "\n";
     }
   return 0;
 }

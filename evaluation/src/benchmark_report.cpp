@@ -13,7 +13,7 @@ namespace {
 void
 append (std::vector<double>& to, const std::vector<double>& from)
 {
-  to.insert (to.end (), from.begin (), from.end ());
+  to.insert (to.end(), from.begin(), from.end());
 }
 
 std::string
@@ -24,11 +24,23 @@ row (const std::string& name, const ScoreSummary& s)
   const double pp = ScoreSummary::precision (s.pair_tp, s.pair_fp);
   const double pr = ScoreSummary::recall (s.pair_tp, s.pair_fn);
   char line[320];
-  std::snprintf (line, sizeof (line),
-                 "| %-10s | %4d | %5.3f | %5.3f | %5.3f | %4d | %5.3f | %5.3f | %5.3f | %6.2f | %6.2f | %7.1f | %7.1f |\n",
-                 name.c_str (), s.frames, ip, ir, ScoreSummary::f1 (ip, ir), s.pair_frames, pp, pr,
-                 ScoreSummary::f1 (pp, pr), median (s.rotation_errors_deg), median (s.translation_errors_mm),
-                 median (s.times_ms), median (s.feature_times_ms));
+  std::snprintf (line,
+                 sizeof (line),
+                 "| %-10s | %4d | %5.3f | %5.3f | %5.3f | %4d | %5.3f | %5.3f | %5.3f "
+                 "| %6.2f | %6.2f | %7.1f | %7.1f |\n",
+                 name.c_str(),
+                 s.frames,
+                 ip,
+                 ir,
+                 ScoreSummary::f1 (ip, ir),
+                 s.pair_frames,
+                 pp,
+                 pr,
+                 ScoreSummary::f1 (pp, pr),
+                 median (s.rotation_errors_deg),
+                 median (s.translation_errors_mm),
+                 median (s.times_ms),
+                 median (s.feature_times_ms));
   return line;
 }
 
@@ -75,21 +87,22 @@ ScoreSummary::add (const ScoreSummary& other)
 double
 median (std::vector<double> values)
 {
-  if (values.empty ())
-    return std::numeric_limits<double>::quiet_NaN ();
-  const auto middle = values.begin () + static_cast<std::ptrdiff_t> (values.size () / 2);
-  std::nth_element (values.begin (), middle, values.end ());
-  if (values.size () % 2 == 1)
+  if (values.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t> (values.size() / 2);
+  std::nth_element (values.begin(), middle, values.end());
+  if (values.size() % 2 == 1)
     return *middle;
-  return 0.5 * (*middle + *std::max_element (values.begin (), middle));
+  return 0.5 * (*middle + *std::max_element (values.begin(), middle));
 }
 
 std::string
 formatReport (const std::map<std::string, ScoreSummary>& scenarios)
 {
-  std::string report =
-      "| scenario   | frames | instances P | R | F1 | pair frames | pairs P | R | F1 | rot. err. deg (median) | transl. err. mm (median) | time ms (median) | SIFT ms (median) |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::string report = "| scenario   | frames | instances P | R | F1 | pair frames | "
+                       "pairs P | R | F1 | rot. err. deg (median) | transl. err. mm "
+                       "(median) | time ms (median) | SIFT ms (median) |\n"
+                       "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   ScoreSummary total;
   for (const auto& [name, summary] : scenarios) {
     report += row (name, summary);

@@ -11,19 +11,21 @@ namespace evaluation {
 bool
 readDetectionResult (const std::string& path, DetectionResult& result)
 {
-  result = DetectionResult ();
+  result = DetectionResult();
   std::ifstream file (path);
   if (!file) {
-    PCL_ERROR ("[mid::evaluation::readDetectionResult] cannot open '%s'\n", path.c_str ());
+    PCL_ERROR ("[mid::evaluation::readDetectionResult] cannot open '%s'\n",
+               path.c_str());
     return false;
   }
   try {
     nlohmann::json document;
     file >> document;
-    if (document.value ("format", std::string ()) != "mid-discovery-result")
+    if (document.value ("format", std::string()) != "mid-discovery-result")
       throw std::runtime_error ("not a mid discovery result (format)");
     if (document.value ("version", 0) != 1)
-      throw std::runtime_error ("result version " + std::to_string (document.value ("version", 0)) +
+      throw std::runtime_error ("result version " +
+                                std::to_string (document.value ("version", 0)) +
                                 ", this build reads version 1");
     const auto& timing = document.at ("timing_ms");
     result.total_ms = timing.value ("total", -1.0);
@@ -35,17 +37,21 @@ readDetectionResult (const std::string& path, DetectionResult& result)
         const auto& pose = instance.at ("pose");
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c)
-            d.pose (r, c) = pose.at (static_cast<std::size_t> (r)).at (static_cast<std::size_t> (c)).get<float> ();
+            d.pose (r, c) = pose.at (static_cast<std::size_t> (r))
+                                .at (static_cast<std::size_t> (c))
+                                .get<float>();
         for (const auto& uv : instance.at ("keypoints"))
-          d.keypoints.emplace_back (uv.at (0).get<float> (), uv.at (1).get<float> ());
+          d.keypoints.emplace_back (uv.at (0).get<float>(), uv.at (1).get<float>());
         detected.instances.push_back (d);
       }
       result.objects.push_back (detected);
     }
   }
   catch (const std::exception& error) {
-    PCL_ERROR ("[mid::evaluation::readDetectionResult] '%s': %s\n", path.c_str (), error.what ());
-    result = DetectionResult ();
+    PCL_ERROR ("[mid::evaluation::readDetectionResult] '%s': %s\n",
+               path.c_str(),
+               error.what());
+    result = DetectionResult();
     return false;
   }
   return true;

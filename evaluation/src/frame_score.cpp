@@ -12,45 +12,56 @@ namespace {
 
 /** The annotated instance at least min_inside of the keypoints lie on, or -1. */
 int
-annotatedInstanceOf (const GroundTruthFrame& truth, const DetectedInstance& instance, double min_inside)
+annotatedInstanceOf (const GroundTruthFrame& truth,
+                     const DetectedInstance& instance,
+                     double min_inside)
 {
-  if (instance.keypoints.empty ())
+  if (instance.keypoints.empty())
     return -1;
-  for (std::size_t k = 0; k < truth.instances.size (); ++k) {
+  for (std::size_t k = 0; k < truth.instances.size(); ++k) {
     std::size_t inside = 0;
     for (const auto& uv : instance.keypoints)
-      inside += truth.contains (k, uv.x (), uv.y ()) ? 1 : 0;
-    if (static_cast<double> (inside) >= min_inside * static_cast<double> (instance.keypoints.size ()))
+      inside += truth.contains (k, uv.x(), uv.y()) ? 1 : 0;
+    if (static_cast<double> (inside) >=
+        min_inside * static_cast<double> (instance.keypoints.size()))
       return static_cast<int> (k);
   }
   return -1;
 }
 
 void
-addPoseErrors (const GroundTruthFrame& truth, const DetectedObject& object,
-               const std::vector<std::pair<std::size_t, int>>& hits, FrameScore& score)
+addPoseErrors (const GroundTruthFrame& truth,
+               const DetectedObject& object,
+               const std::vector<std::pair<std::size_t, int>>& hits,
+               FrameScore& score)
 {
-  for (std::size_t a = 0; a < hits.size (); ++a)
-    for (std::size_t b = a + 1; b < hits.size (); ++b) {
+  for (std::size_t a = 0; a < hits.size(); ++a)
+    for (std::size_t b = a + 1; b < hits.size(); ++b) {
       const Eigen::Matrix4f& pa = object.instances[hits[a].first].pose;
       const Eigen::Matrix4f& pb = object.instances[hits[b].first].pose;
-      const Eigen::Matrix4f& ga = truth.instances[static_cast<std::size_t> (hits[a].second)].pose;
-      const Eigen::Matrix4f& gb = truth.instances[static_cast<std::size_t> (hits[b].second)].pose;
-      const Eigen::Matrix4d estimated = (pb * pa.inverse ()).cast<double> ();
-      const Eigen::Matrix4d expected = (gb * ga.inverse ()).cast<double> ();
+      const Eigen::Matrix4f& ga =
+          truth.instances[static_cast<std::size_t> (hits[a].second)].pose;
+      const Eigen::Matrix4f& gb =
+          truth.instances[static_cast<std::size_t> (hits[b].second)].pose;
+      const Eigen::Matrix4d estimated = (pb * pa.inverse()).cast<double>();
+      const Eigen::Matrix4d expected = (gb * ga.inverse()).cast<double>();
       const Eigen::Matrix3d relative =
-          estimated.topLeftCorner<3, 3> ().transpose () * expected.topLeftCorner<3, 3> ();
+          estimated.topLeftCorner<3, 3>().transpose() * expected.topLeftCorner<3, 3>();
       score.rotation_errors_deg.push_back (
-          Eigen::AngleAxisd (Eigen::Quaterniond (relative).normalized ()).angle () * 180.0 / M_PI);
-      const Eigen::Vector4d origin = ga.col (3).cast<double> ();
-      score.translation_errors_mm.push_back (((estimated - expected) * origin).head<3> ().norm () * 1000.0);
+          Eigen::AngleAxisd (Eigen::Quaterniond (relative).normalized()).angle() *
+          180.0 / M_PI);
+      const Eigen::Vector4d origin = ga.col (3).cast<double>();
+      score.translation_errors_mm.push_back (
+          ((estimated - expected) * origin).head<3>().norm() * 1000.0);
     }
 }
 
 } // namespace
 
 FrameScore
-scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double min_inside)
+scoreFrame (const GroundTruthFrame& truth,
+            const DetectionResult& result,
+            double min_inside)
 {
   FrameScore score;
   std::map<int, int> annotated_of_type;
@@ -68,9 +79,9 @@ scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double
   std::set<int> found_types, found_pairs;
   std::set<int> found_instances;
   for (const auto& object : result.objects) {
-    std::vector<int> hit (object.instances.size ());
+    std::vector<int> hit (object.instances.size());
     std::map<int, int> votes;
-    for (std::size_t i = 0; i < object.instances.size (); ++i) {
+    for (std::size_t i = 0; i < object.instances.size(); ++i) {
       hit[i] = annotatedInstanceOf (truth, object.instances[i], min_inside);
       if (hit[i] >= 0)
         ++votes[truth.instances[static_cast<std::size_t> (hit[i])].object_id];
@@ -81,18 +92,20 @@ scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double
         type = candidate;
         best = count;
       }
-    const bool valid = type >= 0 && annotated_of_type[type] >= 2 && found_types.count (type) == 0;
+    const bool valid =
+        type >= 0 && annotated_of_type[type] >= 2 && found_types.count (type) == 0;
     if (!valid) {
-      score.instance_fp += static_cast<int> (object.instances.size ());
+      score.instance_fp += static_cast<int> (object.instances.size());
       ++score.pair_fp;
       continue;
     }
     found_types.insert (type);
     std::vector<std::pair<std::size_t, int>> true_hits;
-    for (std::size_t i = 0; i < object.instances.size (); ++i) {
-      const bool good = hit[i] >= 0 &&
-                        truth.instances[static_cast<std::size_t> (hit[i])].object_id == type &&
-                        found_instances.insert (hit[i]).second;
+    for (std::size_t i = 0; i < object.instances.size(); ++i) {
+      const bool good =
+          hit[i] >= 0 &&
+          truth.instances[static_cast<std::size_t> (hit[i])].object_id == type &&
+          found_instances.insert (hit[i]).second;
       if (good) {
         ++score.instance_tp;
         true_hits.emplace_back (i, hit[i]);
@@ -100,7 +113,7 @@ scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double
       else
         ++score.instance_fp;
     }
-    if (true_hits.size () >= 2) {
+    if (true_hits.size() >= 2) {
       ++score.pair_tp;
       found_pairs.insert (type);
     }
@@ -108,8 +121,9 @@ scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double
       ++score.pair_fp;
     addPoseErrors (truth, object, true_hits, score);
   }
-  for (std::size_t k = 0; k < truth.instances.size (); ++k)
-    if (annotated_of_type[truth.instances[k].object_id] >= 2 && found_instances.count (static_cast<int> (k)) == 0)
+  for (std::size_t k = 0; k < truth.instances.size(); ++k)
+    if (annotated_of_type[truth.instances[k].object_id] >= 2 &&
+        found_instances.count (static_cast<int> (k)) == 0)
       ++score.instance_fn;
   for (const auto& [type, count] : annotated_of_type)
     if (count >= 2 && found_pairs.count (type) == 0)

@@ -22,7 +22,8 @@ readJson (const fs::path& path, json& value)
 {
   std::ifstream file (path);
   if (!file) {
-    PCL_ERROR ("[mid::evaluation::loadBopScene] cannot open '%s'\n", path.string ().c_str ());
+    PCL_ERROR ("[mid::evaluation::loadBopScene] cannot open '%s'\n",
+               path.string().c_str());
     return false;
   }
   try {
@@ -30,7 +31,8 @@ readJson (const fs::path& path, json& value)
   }
   catch (const std::exception& error) {
     PCL_ERROR ("[mid::evaluation::loadBopScene] '%s' is not valid JSON: %s\n",
-               path.string ().c_str (), error.what ());
+               path.string().c_str(),
+               error.what());
     return false;
   }
   return true;
@@ -50,9 +52,11 @@ bool
 GroundTruthFrame::contains (std::size_t k, float u, float v) const
 {
   const GroundTruthInstance& instance = instances[k];
-  const int x = static_cast<int> (std::lround (u)), y = static_cast<int> (std::lround (v));
-  if (!instance.mask_visible.empty ())
-    return x >= 0 && y >= 0 && x < instance.mask_visible.cols && y < instance.mask_visible.rows &&
+  const int x = static_cast<int> (std::lround (u)),
+            y = static_cast<int> (std::lround (v));
+  if (!instance.mask_visible.empty())
+    return x >= 0 && y >= 0 && x < instance.mask_visible.cols &&
+           y < instance.mask_visible.rows &&
            instance.mask_visible.at<unsigned char> (y, x) != 0;
   return instance.bbox_visible.contains (cv::Point (x, y));
 }
@@ -60,7 +64,7 @@ GroundTruthFrame::contains (std::size_t k, float u, float v) const
 bool
 loadBopScene (const std::string& folder, GroundTruthScene& scene)
 {
-  scene.clear ();
+  scene.clear();
   const fs::path root (folder);
   json gt, info;
   if (!readJson (root / "scene_gt.json", gt))
@@ -69,34 +73,36 @@ loadBopScene (const std::string& folder, GroundTruthScene& scene)
   if (has_info && !readJson (root / "scene_gt_info.json", info))
     return false;
   try {
-    for (const auto& [key, entries] : gt.items ()) {
+    for (const auto& [key, entries] : gt.items()) {
       GroundTruthFrame frame;
       frame.image_id = std::stoi (key);
-      for (std::size_t k = 0; k < entries.size (); ++k) {
+      for (std::size_t k = 0; k < entries.size(); ++k) {
         const auto& entry = entries.at (k);
         GroundTruthInstance instance;
-        instance.object_id = entry.at ("obj_id").get<int> ();
-        const auto rotation = entry.at ("cam_R_m2c").get<std::vector<double>> ();
-        const auto translation = entry.at ("cam_t_m2c").get<std::vector<double>> ();
-        if (rotation.size () != 9 || translation.size () != 3)
+        instance.object_id = entry.at ("obj_id").get<int>();
+        const auto rotation = entry.at ("cam_R_m2c").get<std::vector<double>>();
+        const auto translation = entry.at ("cam_t_m2c").get<std::vector<double>>();
+        if (rotation.size() != 9 || translation.size() != 3)
           throw std::runtime_error ("cam_R_m2c needs 9 and cam_t_m2c 3 values");
         for (int r = 0; r < 3; ++r) {
           for (int c = 0; c < 3; ++c)
-            instance.pose (r, c) = static_cast<float> (rotation[static_cast<std::size_t> (3 * r + c)]);
-          instance.pose (r, 3) = static_cast<float> (translation[static_cast<std::size_t> (r)] / 1000.0);
+            instance.pose (r, c) =
+                static_cast<float> (rotation[static_cast<std::size_t> (3 * r + c)]);
+          instance.pose (r, 3) =
+              static_cast<float> (translation[static_cast<std::size_t> (r)] / 1000.0);
         }
         if (has_info && info.contains (key)) {
           const auto& i = info.at (key).at (k);
-          const auto box = i.at ("bbox_visib").get<std::vector<int>> ();
-          if (box.size () == 4)
+          const auto box = i.at ("bbox_visib").get<std::vector<int>>();
+          if (box.size() == 4)
             instance.bbox_visible = cv::Rect (box[0], box[1], box[2], box[3]);
           instance.visible_pixels = i.value ("px_count_visib", 0);
         }
         const fs::path mask = root / "mask_visib" / maskName (frame.image_id, k);
         if (fs::exists (mask)) {
-          instance.mask_visible = cv::imread (mask.string (), cv::IMREAD_GRAYSCALE);
-          if (instance.mask_visible.empty ())
-            throw std::runtime_error ("cannot read mask " + mask.string ());
+          instance.mask_visible = cv::imread (mask.string(), cv::IMREAD_GRAYSCALE);
+          if (instance.mask_visible.empty())
+            throw std::runtime_error ("cannot read mask " + mask.string());
         }
         frame.instances.push_back (instance);
       }
@@ -104,8 +110,9 @@ loadBopScene (const std::string& folder, GroundTruthScene& scene)
     }
   }
   catch (const std::exception& error) {
-    PCL_ERROR ("[mid::evaluation::loadBopScene] '%s': %s\n", folder.c_str (), error.what ());
-    scene.clear ();
+    PCL_ERROR (
+        "[mid::evaluation::loadBopScene] '%s': %s\n", folder.c_str(), error.what());
+    scene.clear();
     return false;
   }
   return true;

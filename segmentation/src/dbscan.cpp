@@ -12,7 +12,10 @@ namespace {
 class DisjointSets
 {
 public:
-  explicit DisjointSets (std::size_t n) : parent_ (n) { std::iota (parent_.begin (), parent_.end (), std::size_t{0}); }
+  explicit DisjointSets (std::size_t n) : parent_ (n)
+  {
+    std::iota (parent_.begin(), parent_.end(), std::size_t{0});
+  }
 
   std::size_t
   find (std::size_t i)
@@ -40,24 +43,26 @@ private:
 } // namespace
 
 std::size_t
-DBSCAN::cluster (std::size_t n, const RegionQuery& query, std::vector<int>& labels,
+DBSCAN::cluster (std::size_t n,
+                 const RegionQuery& query,
+                 std::vector<int>& labels,
                  std::vector<bool>* core) const
 {
   labels.assign (n, -1);
   std::vector<bool> is_core (n, false);
   if (min_samples_ == 0) {
-    labels.clear ();
+    labels.clear();
     return 0;
   }
   std::vector<Neighbor> neighbors;
   for (std::size_t i = 0; i < n; ++i) {
     query (i, neighbors);
-    is_core[i] = neighbors.size () + 1 >= min_samples_;
+    is_core[i] = neighbors.size() + 1 >= min_samples_;
   }
 
   DisjointSets sets (n);
   std::vector<std::size_t> nearest_core (n, n);
-  std::vector<double> nearest_distance (n, std::numeric_limits<double>::infinity ());
+  std::vector<double> nearest_distance (n, std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < n; ++i) {
     query (i, neighbors);
     for (const auto& [j, distance] : neighbors) {
@@ -91,11 +96,13 @@ DBSCAN::cluster (std::size_t n, const RegionQuery& query, std::vector<int>& labe
 }
 
 DBSCAN::RegionQuery
-makeAllPairsRegionQuery (std::size_t n, double eps,
+makeAllPairsRegionQuery (std::size_t n,
+                         double eps,
                          std::function<double (std::size_t, std::size_t)> distance)
 {
-  return [n, eps, distance = std::move (distance)] (std::size_t i, std::vector<DBSCAN::Neighbor>& out) {
-    out.clear ();
+  return [n, eps, distance = std::move (distance)] (
+             std::size_t i, std::vector<DBSCAN::Neighbor>& out) {
+    out.clear();
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i)
         continue;

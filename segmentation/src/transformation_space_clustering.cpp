@@ -1,7 +1,6 @@
-#include <mid/segmentation/transformation_space_clustering.h>
-
 #include <mid/registration/rigid_transform.h>
 #include <mid/segmentation/dbscan.h>
+#include <mid/segmentation/transformation_space_clustering.h>
 #include <mid/segmentation/triplet_distance.h>
 
 #include <pcl/console/print.h>
@@ -15,7 +14,8 @@ namespace mid {
 
 namespace {
 
-using Geometries = std::vector<TripletGeometry, Eigen::aligned_allocator<TripletGeometry>>;
+using Geometries =
+    std::vector<TripletGeometry, Eigen::aligned_allocator<TripletGeometry>>;
 
 /** The six keypoint indices of a triplet: a total order that does not depend on input order. */
 std::array<pcl::index_t, 6>
@@ -31,34 +31,41 @@ tripletKey (const TripletMatch& t)
 
 /** Pairs, point sets and pose of a cluster from its member triplets. */
 void
-estimateCluster (const TripletMatches& triplets, TripletCluster& cluster, const KeypointCloud& source,
+estimateCluster (const TripletMatches& triplets,
+                 TripletCluster& cluster,
+                 const KeypointCloud& source,
                  const KeypointCloud& target)
 {
   std::set<std::pair<pcl::index_t, pcl::index_t>> pairs;
-  for (std::size_t m = 0; m < cluster.triplets.size (); ++m)
+  for (std::size_t m = 0; m < cluster.triplets.size(); ++m)
     for (const auto& c : triplets[cluster.triplets[m]].correspondences)
-      pairs.insert (cluster.reversed[m] ? std::make_pair (c.index_match, c.index_query)
-                                        : std::make_pair (c.index_query, c.index_match));
+      pairs.insert (cluster.reversed[m]
+                        ? std::make_pair (c.index_match, c.index_query)
+                        : std::make_pair (c.index_query, c.index_match));
   std::set<pcl::index_t> source_set, target_set;
-  Eigen::Matrix3Xf from (3, pairs.size ()), to (3, pairs.size ());
-  cluster.correspondences.clear ();
+  Eigen::Matrix3Xf from (3, pairs.size()), to (3, pairs.size());
+  cluster.correspondences.clear();
   Eigen::Index column = 0;
   for (const auto& [p, q] : pairs) {
     cluster.correspondences.emplace_back (p, q, 0.0f);
     source_set.insert (p);
     target_set.insert (q);
     // Reversed triplets only exist within one frame, where source and target are one cloud.
-    from.col (column) = source[static_cast<std::size_t> (p)].getVector3fMap ();
-    to.col (column++) = target[static_cast<std::size_t> (q)].getVector3fMap ();
+    from.col (column) = source[static_cast<std::size_t> (p)].getVector3fMap();
+    to.col (column++) = target[static_cast<std::size_t> (q)].getVector3fMap();
   }
-  cluster.source_indices.assign (source_set.begin (), source_set.end ());
-  cluster.target_indices.assign (target_set.begin (), target_set.end ());
+  cluster.source_indices.assign (source_set.begin(), source_set.end());
+  cluster.target_indices.assign (target_set.begin(), target_set.end());
   cluster.transformation = estimateRigidTransform (from, to, &cluster.rms_error);
   for (auto& c : cluster.correspondences) {
-    const Eigen::Vector3f p = source[static_cast<std::size_t> (c.index_query)].getVector3fMap ();
-    const Eigen::Vector3f q = target[static_cast<std::size_t> (c.index_match)].getVector3fMap ();
-    c.distance = ((cluster.transformation.topLeftCorner<3, 3> () * p +
-                   cluster.transformation.topRightCorner<3, 1> ()) - q).norm ();
+    const Eigen::Vector3f p =
+        source[static_cast<std::size_t> (c.index_query)].getVector3fMap();
+    const Eigen::Vector3f q =
+        target[static_cast<std::size_t> (c.index_match)].getVector3fMap();
+    c.distance = ((cluster.transformation.topLeftCorner<3, 3>() * p +
+                   cluster.transformation.topRightCorner<3, 1>()) -
+                  q)
+                     .norm();
   }
 }
 
@@ -66,21 +73,27 @@ estimateCluster (const TripletMatches& triplets, TripletCluster& cluster, const 
   * sum_k |T(q_k) - p_k| + sum_k |T^-1(p_k) - q_k| <= eps for the reversed pairs (q_k -> p_k).
   */
 bool
-isInverseOf (const TripletCluster& cluster, const TripletCluster& other, const Geometries& geometry,
-             const std::vector<std::size_t>& canonical_of, float eps)
+isInverseOf (const TripletCluster& cluster,
+             const TripletCluster& other,
+             const Geometries& geometry,
+             const std::vector<std::size_t>& canonical_of,
+             float eps)
 {
-  const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3> ();
-  const Eigen::Vector3f translation = cluster.transformation.topRightCorner<3, 1> ();
+  const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3>();
+  const Eigen::Vector3f translation = cluster.transformation.topRightCorner<3, 1>();
   std::size_t agreeing = 0;
-  for (std::size_t m = 0; m < other.triplets.size (); ++m) {
+  for (std::size_t m = 0; m < other.triplets.size(); ++m) {
     const TripletGeometry& g = geometry[canonical_of[other.triplets[m]]];
     const TripletGeometry r = other.reversed[m] ? g : invertTripletGeometry (g);
     const float error =
-        ((rotation * r.p).colwise () + translation - r.q).colwise ().norm ().sum () +
-        ((rotation.transpose () * (r.q.colwise () - translation)) - r.p).colwise ().norm ().sum ();
+        ((rotation * r.p).colwise() + translation - r.q).colwise().norm().sum() +
+        ((rotation.transpose() * (r.q.colwise() - translation)) - r.p)
+            .colwise()
+            .norm()
+            .sum();
     agreeing += error <= eps ? 1 : 0;
   }
-  return 2 * agreeing >= other.triplets.size ();
+  return 2 * agreeing >= other.triplets.size();
 }
 
 /** Calls visit (j, distance) for every j != i within eps of triplet i (paper's distance), after
@@ -88,9 +101,13 @@ isInverseOf (const TripletCluster& cluster, const TripletCluster& other, const G
   */
 template <typename Visit>
 void
-forEachNeighbor (const Geometries& geometry, std::size_t i, std::size_t first, float eps, Visit visit)
+forEachNeighbor (const Geometries& geometry,
+                 std::size_t i,
+                 std::size_t first,
+                 float eps,
+                 Visit visit)
 {
-  for (std::size_t j = first; j < geometry.size (); ++j) {
+  for (std::size_t j = first; j < geometry.size(); ++j) {
     if (j == i || tripletDistanceLowerBound (geometry[i], geometry[j]) > eps)
       continue;
     const float distance = tripletDistance (geometry[i], geometry[j]);
@@ -106,21 +123,25 @@ forEachNeighbor (const Geometries& geometry, std::size_t i, std::size_t first, f
 DBSCAN::RegionQuery
 makeRegionQuery (const Geometries& geometry, float eps, std::size_t max_stored)
 {
-  auto table = std::make_shared<std::vector<std::vector<DBSCAN::Neighbor>>> (geometry.size ());
+  auto table =
+      std::make_shared<std::vector<std::vector<DBSCAN::Neighbor>>> (geometry.size());
   std::size_t stored = 0;
-  for (std::size_t i = 0; i < geometry.size () && stored <= max_stored; ++i)
+  for (std::size_t i = 0; i < geometry.size() && stored <= max_stored; ++i)
     forEachNeighbor (geometry, i, i + 1, eps, [&] (std::size_t j, double distance) {
       (*table)[i].emplace_back (j, distance);
       (*table)[j].emplace_back (i, distance);
       stored += 2;
     });
   if (stored <= max_stored)
-    return [table] (std::size_t i, std::vector<DBSCAN::Neighbor>& out) { out = (*table)[i]; };
-  table.reset ();
+    return [table] (std::size_t i, std::vector<DBSCAN::Neighbor>& out) {
+      out = (*table)[i];
+    };
+  table.reset();
   return [&geometry, eps] (std::size_t i, std::vector<DBSCAN::Neighbor>& out) {
-    out.clear ();
-    forEachNeighbor (geometry, i, 0, eps,
-                     [&out] (std::size_t j, double distance) { out.emplace_back (j, distance); });
+    out.clear();
+    forEachNeighbor (geometry, i, 0, eps, [&out] (std::size_t j, double distance) {
+      out.emplace_back (j, distance);
+    });
   };
 }
 
@@ -130,11 +151,11 @@ void
 TransformationSpaceClustering::setInputTriplets (const TripletMatchesConstPtr& triplets)
 {
   triplets_ = triplets;
-  auto correspondences = pcl::make_shared<pcl::Correspondences> ();
+  auto correspondences = pcl::make_shared<pcl::Correspondences>();
   if (triplets)
     for (const auto& t : *triplets)
-      correspondences->insert (correspondences->end (), t.correspondences.begin (),
-                               t.correspondences.end ());
+      correspondences->insert (
+          correspondences->end(), t.correspondences.begin(), t.correspondences.end());
   model_scene_corrs_ = correspondences;
 }
 
@@ -143,7 +164,7 @@ TransformationSpaceClustering::setModelSceneCorrespondences (
     const pcl::CorrespondencesConstPtr& correspondences)
 {
   model_scene_corrs_ = correspondences;
-  triplets_.reset ();
+  triplets_.reset();
 }
 
 bool
@@ -151,26 +172,39 @@ TransformationSpaceClustering::checkInputs (const TripletMatches& triplets) cons
 {
   const char* name = "[mid::TransformationSpaceClustering::cluster]";
   if (!(eps_ > 0.0f) || min_cluster_size_ < 1) {
-    PCL_ERROR ("%s Invalid parameter: cluster distance %g (> 0), min cluster size %zu (>= 1).\n",
-               name, static_cast<double> (eps_), min_cluster_size_);
+    PCL_ERROR ("%s Invalid parameter: cluster distance %g (> 0), min cluster size %zu "
+               "(>= 1).\n",
+               name,
+               static_cast<double> (eps_),
+               min_cluster_size_);
     return false;
   }
-  if (input_->empty () || scene_->empty ()) {
+  if (input_->empty() || scene_->empty()) {
     PCL_ERROR ("%s The model or scene keypoint cloud is empty.\n", name);
     return false;
   }
-  for (std::size_t i = 0; i < triplets.size (); ++i) {
-    if (!triplets[i].transformation.allFinite ()) {
+  for (std::size_t i = 0; i < triplets.size(); ++i) {
+    if (!triplets[i].transformation.allFinite()) {
       PCL_ERROR ("%s Triplet %zu has a non-finite pose.\n", name, i);
       return false;
     }
     for (const auto& c : triplets[i].correspondences)
-      if (c.index_query < 0 || static_cast<std::size_t> (c.index_query) >= input_->size () ||
-          c.index_match < 0 || static_cast<std::size_t> (c.index_match) >= scene_->size () ||
-          !(*input_)[static_cast<std::size_t> (c.index_query)].getVector3fMap ().allFinite () ||
-          !(*scene_)[static_cast<std::size_t> (c.index_match)].getVector3fMap ().allFinite ()) {
-        PCL_ERROR ("%s Triplet %zu refers to keypoint %d -> %d, which is missing or not finite.\n",
-                   name, i, c.index_query, c.index_match);
+      if (c.index_query < 0 ||
+          static_cast<std::size_t> (c.index_query) >= input_->size() ||
+          c.index_match < 0 ||
+          static_cast<std::size_t> (c.index_match) >= scene_->size() ||
+          !(*input_)[static_cast<std::size_t> (c.index_query)]
+               .getVector3fMap()
+               .allFinite() ||
+          !(*scene_)[static_cast<std::size_t> (c.index_match)]
+               .getVector3fMap()
+               .allFinite()) {
+        PCL_ERROR ("%s Triplet %zu refers to keypoint %d -> %d, which is missing or "
+                   "not finite.\n",
+                   name,
+                   i,
+                   c.index_query,
+                   c.index_match);
         return false;
       }
   }
@@ -181,31 +215,31 @@ void
 TransformationSpaceClustering::clusterCorrespondences (
     std::vector<pcl::Correspondences>& clustered_corrs)
 {
-  clustered_corrs.clear ();
-  clusters_.clear ();
-  used_triplets_.clear ();
+  clustered_corrs.clear();
+  clusters_.clear();
+  used_triplets_.clear();
   const bool one_frame = input_ == scene_;
   if (triplets_)
     used_triplets_ = *triplets_;
   else {
     CorrespondenceRejectorPPFTriplet::Ptr rejector =
-        rejector_ ? rejector_ : std::make_shared<CorrespondenceRejectorPPFTriplet> ();
+        rejector_ ? rejector_ : std::make_shared<CorrespondenceRejectorPPFTriplet>();
     rejector->setInputSource (input_);
     rejector->setInputTarget (one_frame ? nullptr : scene_);
     pcl::Correspondences remaining;
     rejector->getRemainingCorrespondences (*model_scene_corrs_, remaining);
-    used_triplets_ = rejector->getTripletMatches ();
+    used_triplets_ = rejector->getTripletMatches();
   }
   if (!checkInputs (used_triplets_)) {
-    used_triplets_.clear ();
+    used_triplets_.clear();
     return;
   }
 
   // Canonical order: sorted by keypoint indices, so the result ignores the input order.
-  const std::size_t n = used_triplets_.size ();
+  const std::size_t n = used_triplets_.size();
   std::vector<std::size_t> order (n), canonical_of (n);
-  std::iota (order.begin (), order.end (), std::size_t{0});
-  std::sort (order.begin (), order.end (), [this] (std::size_t a, std::size_t b) {
+  std::iota (order.begin(), order.end(), std::size_t{0});
+  std::sort (order.begin(), order.end(), [this] (std::size_t a, std::size_t b) {
     return tripletKey (used_triplets_[a]) < tripletKey (used_triplets_[b]);
   });
   Geometries geometry (n);
@@ -214,7 +248,8 @@ TransformationSpaceClustering::clusterCorrespondences (
     geometry[k] = makeTripletGeometry (used_triplets_[order[k]], *input_, *scene_);
   }
 
-  const DBSCAN::RegionQuery query = makeRegionQuery (geometry, eps_, max_stored_neighbors_);
+  const DBSCAN::RegionQuery query =
+      makeRegionQuery (geometry, eps_, max_stored_neighbors_);
   DBSCAN dbscan;
   dbscan.setMinSamples (min_cluster_size_);
   std::vector<int> labels;
@@ -229,22 +264,24 @@ TransformationSpaceClustering::clusterCorrespondences (
   for (auto& cluster : clusters)
     estimateCluster (used_triplets_, cluster, *input_, *scene_);
 
-  const auto larger = [&canonical_of] (const TripletCluster& a, const TripletCluster& b) {
-    if (a.triplets.size () != b.triplets.size ())
-      return a.triplets.size () > b.triplets.size ();
-    return canonical_of[a.triplets.front ()] < canonical_of[b.triplets.front ()];
+  const auto larger = [&canonical_of] (const TripletCluster& a,
+                                       const TripletCluster& b) {
+    if (a.triplets.size() != b.triplets.size())
+      return a.triplets.size() > b.triplets.size();
+    return canonical_of[a.triplets.front()] < canonical_of[b.triplets.front()];
   };
-  std::sort (clusters.begin (), clusters.end (), larger);
+  std::sort (clusters.begin(), clusters.end(), larger);
 
   if (merge_inverse_ && one_frame) {
-    std::vector<bool> merged (clusters.size (), false);
-    for (std::size_t i = 0; i < clusters.size (); ++i) {
+    std::vector<bool> merged (clusters.size(), false);
+    for (std::size_t i = 0; i < clusters.size(); ++i) {
       if (merged[i])
         continue;
-      for (std::size_t j = i + 1; j < clusters.size (); ++j) {
-        if (merged[j] || !isInverseOf (clusters[i], clusters[j], geometry, canonical_of, eps_))
+      for (std::size_t j = i + 1; j < clusters.size(); ++j) {
+        if (merged[j] ||
+            !isInverseOf (clusters[i], clusters[j], geometry, canonical_of, eps_))
           continue;
-        for (std::size_t m = 0; m < clusters[j].triplets.size (); ++m) {
+        for (std::size_t m = 0; m < clusters[j].triplets.size(); ++m) {
           clusters[i].triplets.push_back (clusters[j].triplets[m]);
           clusters[i].reversed.push_back (!clusters[j].reversed[m]);
         }
@@ -253,11 +290,11 @@ TransformationSpaceClustering::clusterCorrespondences (
       }
     }
     TripletClusters kept;
-    for (std::size_t i = 0; i < clusters.size (); ++i)
+    for (std::size_t i = 0; i < clusters.size(); ++i)
       if (!merged[i])
         kept.push_back (clusters[i]);
     clusters.swap (kept);
-    std::sort (clusters.begin (), clusters.end (), larger);
+    std::sort (clusters.begin(), clusters.end(), larger);
   }
 
   clusters_ = clusters;
@@ -266,18 +303,21 @@ TransformationSpaceClustering::clusterCorrespondences (
 }
 
 void
-TransformationSpaceClustering::cluster (std::vector<pcl::Correspondences>& clustered_corrs)
+TransformationSpaceClustering::cluster (
+    std::vector<pcl::Correspondences>& clustered_corrs)
 {
-  clusters_.clear ();
-  used_triplets_.clear ();
-  pcl::CorrespondenceGrouping<pcl::PointNormal, pcl::PointNormal>::cluster (clustered_corrs);
+  clusters_.clear();
+  used_triplets_.clear();
+  pcl::CorrespondenceGrouping<pcl::PointNormal, pcl::PointNormal>::cluster (
+      clustered_corrs);
 }
 
 void
-TransformationSpaceClustering::recognize (Transformations& transformations,
-                                          std::vector<pcl::Correspondences>& clustered_corrs)
+TransformationSpaceClustering::recognize (
+    Transformations& transformations,
+    std::vector<pcl::Correspondences>& clustered_corrs)
 {
-  transformations.clear ();
+  transformations.clear();
   cluster (clustered_corrs);
   for (const auto& c : clusters_)
     transformations.push_back (c.transformation);

@@ -27,7 +27,8 @@ discover (const mid::test::RenderedObjectsScene& scene)
 
 /** The box each instance of a model lies on (by the majority of its keypoints). */
 std::vector<int>
-boxesOf (const mid::test::RenderedObjectsScene& scene, const mid::DiscoveryResult& result,
+boxesOf (const mid::test::RenderedObjectsScene& scene,
+         const mid::DiscoveryResult& result,
          const mid::ObjectModel& model)
 {
   std::vector<int> boxes;
@@ -46,21 +47,28 @@ boxesOf (const mid::test::RenderedObjectsScene& scene, const mid::DiscoveryResul
   * translation in metres at the first instance's model origin).
   */
 void
-expectRelativePosesMatch (const mid::test::RenderedObjectsScene& scene, const mid::ObjectModel& model,
-                          const std::vector<int>& boxes, double max_degrees, double max_metres)
+expectRelativePosesMatch (const mid::test::RenderedObjectsScene& scene,
+                          const mid::ObjectModel& model,
+                          const std::vector<int>& boxes,
+                          double max_degrees,
+                          double max_metres)
 {
-  for (std::size_t i = 0; i < boxes.size (); ++i)
-    for (std::size_t j = i + 1; j < boxes.size (); ++j) {
-      const Eigen::Matrix4f estimated = model.instances[j].pose * model.instances[i].pose.inverse ();
-      const Eigen::Matrix4f truth = (scene.boxes[static_cast<std::size_t> (boxes[j])].pose *
-                                     scene.boxes[static_cast<std::size_t> (boxes[i])].pose.inverse ())
-                                        .matrix ()
-                                        .cast<float> ();
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const Eigen::Matrix4f estimated =
+          model.instances[j].pose * model.instances[i].pose.inverse();
+      const Eigen::Matrix4f truth =
+          (scene.boxes[static_cast<std::size_t> (boxes[j])].pose *
+           scene.boxes[static_cast<std::size_t> (boxes[i])].pose.inverse())
+              .matrix()
+              .cast<float>();
       // Compare where both move the first instance's model origin, and the rotations.
-      Eigen::Matrix4f at_origin = Eigen::Matrix4f::Identity ();
-      at_origin.topRightCorner<3, 1> () = model.instances[i].pose.topRightCorner<3, 1> ();
-      const auto error = mid::test::poseError (estimated * at_origin, truth * at_origin);
-      EXPECT_LT (error.first * 180.0 / M_PI, max_degrees) << "instances " << i << ", " << j;
+      Eigen::Matrix4f at_origin = Eigen::Matrix4f::Identity();
+      at_origin.topRightCorner<3, 1>() = model.instances[i].pose.topRightCorner<3, 1>();
+      const auto error =
+          mid::test::poseError (estimated * at_origin, truth * at_origin);
+      EXPECT_LT (error.first * 180.0 / M_PI, max_degrees)
+          << "instances " << i << ", " << j;
       EXPECT_LT (error.second, max_metres) << "instances " << i << ", " << j;
     }
 }
@@ -75,15 +83,15 @@ TEST (MultiInstanceDiscovery, FindsThreeCopiesOfOneObjectWithTheirRelativePoses)
       {kCookies, {0.16, 0.11, 0.04}, boxPose (0.0, 0.14, 0.80, -40.0, 25.0)},
   });
   const auto result = discover (scene);
-  ASSERT_EQ (result.models.size (), 1u);
-  const auto& model = result.models.front ();
-  ASSERT_EQ (model.instances.size (), 3u);
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto& model = result.models.front();
+  ASSERT_EQ (model.instances.size(), 3u);
   const auto boxes = boxesOf (scene, result, model);
-  EXPECT_EQ (std::set<int> (boxes.begin (), boxes.end ()), (std::set<int>{0, 1, 2}));
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2}));
   expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
   for (const auto& instance : model.instances)
     EXPECT_LT (instance.rms_error, 0.003f);
-  EXPECT_GT (model.landmarks.size (), 20u);
+  EXPECT_GT (model.landmarks.size(), 20u);
   EXPECT_LT (model.diameter, 0.21f); // the box's diagonal is 0.20 m
 }
 
@@ -96,12 +104,12 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
       {kJuice, {0.12, 0.12, 0.04}, boxPose (-0.14, 0.12, 0.86, 80.0, 5.0)},
   });
   const auto result = discover (scene);
-  ASSERT_EQ (result.models.size (), 2u);
+  ASSERT_EQ (result.models.size(), 2u);
   std::set<std::set<int>> found;
   for (const auto& model : result.models) {
     const auto boxes = boxesOf (scene, result, model);
-    ASSERT_EQ (boxes.size (), 2u);
-    found.insert (std::set<int> (boxes.begin (), boxes.end ()));
+    ASSERT_EQ (boxes.size(), 2u);
+    found.insert (std::set<int> (boxes.begin(), boxes.end()));
     expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
   }
   EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
@@ -114,8 +122,8 @@ TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)
       {kJuice, {0.12, 0.12, 0.04}, boxPose (0.14, 0.02, 0.88, 30.0, -15.0)},
   });
   const auto result = discover (scene);
-  EXPECT_GT (result.keypoints->size (), 100u);
-  EXPECT_TRUE (result.models.empty ());
+  EXPECT_GT (result.keypoints->size(), 100u);
+  EXPECT_TRUE (result.models.empty());
 }
 
 TEST (MultiInstanceDiscovery, SameInputSameResult)
@@ -125,10 +133,10 @@ TEST (MultiInstanceDiscovery, SameInputSameResult)
       {kCookies, {0.16, 0.11, 0.04}, boxPose (0.15, 0.02, 0.88, 60.0, -15.0)},
   });
   const auto a = discover (scene), b = discover (scene);
-  ASSERT_EQ (a.models.size (), b.models.size ());
-  ASSERT_EQ (a.models.size (), 1u);
-  ASSERT_EQ (a.models[0].instances.size (), b.models[0].instances.size ());
-  for (std::size_t i = 0; i < a.models[0].instances.size (); ++i) {
+  ASSERT_EQ (a.models.size(), b.models.size());
+  ASSERT_EQ (a.models.size(), 1u);
+  ASSERT_EQ (a.models[0].instances.size(), b.models[0].instances.size());
+  for (std::size_t i = 0; i < a.models[0].instances.size(); ++i) {
     EXPECT_EQ (a.models[0].instances[i].pose, b.models[0].instances[i].pose);
     EXPECT_EQ (a.models[0].instances[i].keypoints, b.models[0].instances[i].keypoints);
   }
@@ -140,20 +148,22 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   mid::DiscoveryResult result;
   EXPECT_FALSE (discovery.discover (result));
   EXPECT_FALSE (result.keypoints);
-  discovery.setInputCloud (pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>> (100, 1));
+  discovery.setInputCloud (
+      pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>> (100, 1));
   EXPECT_FALSE (discovery.discover (result));
 
-  const auto scene = mid::test::renderBoxes ({{kCookies, {0.16, 0.11, 0.04}, boxPose (0.0, 0.0, 0.85, 0.0)}});
+  const auto scene = mid::test::renderBoxes (
+      {{kCookies, {0.16, 0.11, 0.04}, boxPose (0.0, 0.0, 0.85, 0.0)}});
   discovery.setInputCloud (scene.cloud);
   mid::DiscoveryParameters parameters;
   parameters.cluster_distance = -1.0f;
   discovery.setParameters (parameters);
   EXPECT_FALSE (discovery.discover (result));
-  EXPECT_TRUE (result.models.empty ());
+  EXPECT_TRUE (result.models.empty());
   std::string problem;
   EXPECT_FALSE (mid::validateDiscoveryParameters (parameters, problem));
   EXPECT_NE (problem.find ("cluster_distance"), std::string::npos);
-  EXPECT_TRUE (mid::validateDiscoveryParameters (mid::DiscoveryParameters (), problem));
+  EXPECT_TRUE (mid::validateDiscoveryParameters (mid::DiscoveryParameters(), problem));
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)
@@ -162,7 +172,8 @@ TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)
       {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.17, -0.06, 0.85, 10.0, 15.0)},
       {kCookies, {0.16, 0.11, 0.04}, boxPose (0.12, -0.08, 0.90, 70.0, -10.0)},
   });
-  for (const auto grouping : {mid::Grouping::geometric_consistency, mid::Grouping::hough3d}) {
+  for (const auto grouping :
+       {mid::Grouping::geometric_consistency, mid::Grouping::hough3d}) {
     mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
     mid::DiscoveryParameters parameters;
     parameters.grouping = grouping;
@@ -173,10 +184,11 @@ TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)
     EXPECT_EQ (result.triplets, 0u); // the peer replaces triplets and DBSCAN
     // A peer may be less precise than ours (that is what the benchmark measures); its largest
     // model must still be the pair of boxes, with their true relative pose.
-    ASSERT_GE (result.models.size (), 1u) << static_cast<int> (grouping);
-    const auto boxes = boxesOf (scene, result, result.models.front ());
-    EXPECT_EQ (std::set<int> (boxes.begin (), boxes.end ()), (std::set<int>{0, 1}))
-        << "grouping " << static_cast<int> (grouping) << ", models " << result.models.size ();
-    expectRelativePosesMatch (scene, result.models.front (), boxes, 2.0, 0.005);
+    ASSERT_GE (result.models.size(), 1u) << static_cast<int> (grouping);
+    const auto boxes = boxesOf (scene, result, result.models.front());
+    EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}))
+        << "grouping " << static_cast<int> (grouping) << ", models "
+        << result.models.size();
+    expectRelativePosesMatch (scene, result.models.front(), boxes, 2.0, 0.005);
   }
 }

@@ -19,13 +19,15 @@ GroundTruthFrame
 frame (const std::vector<std::pair<int, int>>& type_and_x)
 {
   GroundTruthFrame f;
-  for (std::size_t k = 0; k < type_and_x.size (); ++k) {
+  for (std::size_t k = 0; k < type_and_x.size(); ++k) {
     GroundTruthInstance i;
     i.object_id = type_and_x[k].first;
     i.bbox_visible = cv::Rect (type_and_x[k].second, 100, 100, 100);
-    i.pose.topLeftCorner<3, 3> () =
-        Eigen::AngleAxisf (0.3f * static_cast<float> (k), Eigen::Vector3f::UnitY ()).toRotationMatrix ();
-    i.pose.topRightCorner<3, 1> () = Eigen::Vector3f (0.2f * static_cast<float> (k), 0.0f, 1.0f);
+    i.pose.topLeftCorner<3, 3>() =
+        Eigen::AngleAxisf (0.3f * static_cast<float> (k), Eigen::Vector3f::UnitY())
+            .toRotationMatrix();
+    i.pose.topRightCorner<3, 1>() =
+        Eigen::Vector3f (0.2f * static_cast<float> (k), 0.0f, 1.0f);
     f.instances.push_back (i);
   }
   return f;
@@ -35,7 +37,10 @@ frame (const std::vector<std::pair<int, int>>& type_and_x)
   * and the given pose.
   */
 DetectedInstance
-instance (int x, int inside, int outside = 0, const Eigen::Matrix4f& pose = Eigen::Matrix4f::Identity ())
+instance (int x,
+          int inside,
+          int outside = 0,
+          const Eigen::Matrix4f& pose = Eigen::Matrix4f::Identity())
 {
   DetectedInstance d;
   d.pose = pose;
@@ -48,7 +53,9 @@ instance (int x, int inside, int outside = 0, const Eigen::Matrix4f& pose = Eige
 
 /** The truthful pose of annotated instance k, in a model frame offset by `model` (any). */
 Eigen::Matrix4f
-truePose (const GroundTruthFrame& f, std::size_t k, const Eigen::Matrix4f& model = Eigen::Matrix4f::Identity ())
+truePose (const GroundTruthFrame& f,
+          std::size_t k,
+          const Eigen::Matrix4f& model = Eigen::Matrix4f::Identity())
 {
   return f.instances[k].pose * model;
 }
@@ -59,12 +66,15 @@ TEST (FrameScore, APerfectResult)
 {
   // Types 1 (three copies) and 2 (two copies) and a distractor of type 3.
   const auto f = frame ({{1, 0}, {1, 150}, {1, 300}, {2, 450}, {2, 600}, {3, 750}});
-  Eigen::Matrix4f offset = Eigen::Matrix4f::Identity ();
-  offset.topRightCorner<3, 1> () = Eigen::Vector3f (0.01f, 0.02f, -0.03f); // model frame is arbitrary
+  Eigen::Matrix4f offset = Eigen::Matrix4f::Identity();
+  offset.topRightCorner<3, 1>() =
+      Eigen::Vector3f (0.01f, 0.02f, -0.03f); // model frame is arbitrary
   DetectionResult r;
-  r.objects.push_back ({{instance (0, 20, 0, truePose (f, 0, offset)), instance (150, 20, 0, truePose (f, 1, offset)),
+  r.objects.push_back ({{instance (0, 20, 0, truePose (f, 0, offset)),
+                         instance (150, 20, 0, truePose (f, 1, offset)),
                          instance (300, 20, 0, truePose (f, 2, offset))}});
-  r.objects.push_back ({{instance (450, 20, 0, truePose (f, 3)), instance (600, 20, 0, truePose (f, 4))}});
+  r.objects.push_back ({{instance (450, 20, 0, truePose (f, 3)),
+                         instance (600, 20, 0, truePose (f, 4))}});
   const auto s = mid::evaluation::scoreFrame (f, r);
   EXPECT_EQ (s.instance_tp, 5);
   EXPECT_EQ (s.instance_fp, 0);
@@ -73,8 +83,8 @@ TEST (FrameScore, APerfectResult)
   EXPECT_EQ (s.pair_fp, 0);
   EXPECT_EQ (s.pair_fn, 0);
   EXPECT_FALSE (s.pairs_only);
-  ASSERT_EQ (s.rotation_errors_deg.size (), 3u + 1u);
-  for (std::size_t i = 0; i < s.rotation_errors_deg.size (); ++i) {
+  ASSERT_EQ (s.rotation_errors_deg.size(), 3u + 1u);
+  for (std::size_t i = 0; i < s.rotation_errors_deg.size(); ++i) {
     EXPECT_NEAR (s.rotation_errors_deg[i], 0.0, 1e-3);
     EXPECT_NEAR (s.translation_errors_mm[i], 0.0, 1e-3);
   }
@@ -83,7 +93,7 @@ TEST (FrameScore, APerfectResult)
 TEST (FrameScore, AnEmptyResultMissesEveryRepeatedInstance)
 {
   const auto f = frame ({{1, 0}, {1, 150}, {2, 300}});
-  const auto s = mid::evaluation::scoreFrame (f, DetectionResult ());
+  const auto s = mid::evaluation::scoreFrame (f, DetectionResult());
   EXPECT_EQ (s.instance_tp, 0);
   EXPECT_EQ (s.instance_fp, 0);
   EXPECT_EQ (s.instance_fn, 2);
@@ -109,9 +119,11 @@ TEST (FrameScore, WrongModelsAndDuplicatesAreFalsePositives)
 {
   const auto f = frame ({{1, 0}, {1, 150}, {3, 300}});
   DetectionResult r;
-  r.objects.push_back ({{instance (0, 20), instance (150, 20)}});  // right
-  r.objects.push_back ({{instance (0, 20), instance (150, 20)}});  // a second model of type 1
-  r.objects.push_back ({{instance (300, 20), instance (300, 20)}}); // the distractor, twice
+  r.objects.push_back ({{instance (0, 20), instance (150, 20)}}); // right
+  r.objects.push_back (
+      {{instance (0, 20), instance (150, 20)}}); // a second model of type 1
+  r.objects.push_back (
+      {{instance (300, 20), instance (300, 20)}}); // the distractor, twice
   r.objects.push_back ({{instance (900, 20), instance (950, 20)}}); // on nothing
   const auto s = mid::evaluation::scoreFrame (f, r);
   EXPECT_EQ (s.instance_tp, 2);
@@ -138,14 +150,18 @@ TEST (FrameScore, RelativePoseErrorsAreMeasured)
   const auto f = frame ({{1, 0}, {1, 150}});
   Eigen::Matrix4f off = truePose (f, 1);
   // Second instance rotated by 2 degrees about its own origin and moved by 3 mm.
-  Eigen::Matrix4f turn = Eigen::Matrix4f::Identity ();
-  turn.topLeftCorner<3, 3> () = Eigen::AngleAxisf (static_cast<float> (2.0 * M_PI / 180.0), Eigen::Vector3f::UnitZ ()).toRotationMatrix ();
+  Eigen::Matrix4f turn = Eigen::Matrix4f::Identity();
+  turn.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisf (static_cast<float> (2.0 * M_PI / 180.0),
+                         Eigen::Vector3f::UnitZ())
+          .toRotationMatrix();
   off = off * turn;
-  off.topRightCorner<3, 1> () += Eigen::Vector3f (0.003f, 0.0f, 0.0f);
+  off.topRightCorner<3, 1>() += Eigen::Vector3f (0.003f, 0.0f, 0.0f);
   DetectionResult r;
-  r.objects.push_back ({{instance (0, 20, 0, truePose (f, 0)), instance (150, 20, 0, off)}});
+  r.objects.push_back (
+      {{instance (0, 20, 0, truePose (f, 0)), instance (150, 20, 0, off)}});
   const auto s = mid::evaluation::scoreFrame (f, r);
-  ASSERT_EQ (s.rotation_errors_deg.size (), 1u);
+  ASSERT_EQ (s.rotation_errors_deg.size(), 1u);
   EXPECT_NEAR (s.rotation_errors_deg[0], 2.0, 1e-3);
   // At the first instance's origin, 0.2 m from the second's: 3 mm plus the turn's lever arm.
   EXPECT_GT (s.translation_errors_mm[0], 3.0);
@@ -165,12 +181,14 @@ TEST (ScoreSummary, SumsFramesAndPairsOnlyFromPairFrames)
   DetectionResult timed;
   timed.total_ms = 100.0;
   summary.add (pairs, timed);
-  summary.add (many, DetectionResult ());
+  summary.add (many, DetectionResult());
   EXPECT_EQ (summary.frames, 2);
   EXPECT_EQ (summary.pair_frames, 1);
   EXPECT_EQ (summary.instance_tp, 5);
   EXPECT_EQ (summary.pair_tp, 1);
-  EXPECT_DOUBLE_EQ (mid::evaluation::ScoreSummary::recall (summary.instance_tp, summary.instance_fn), 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ (
+      mid::evaluation::ScoreSummary::recall (summary.instance_tp, summary.instance_fn),
+      5.0 / 6.0);
   EXPECT_DOUBLE_EQ (mid::evaluation::median (summary.times_ms), 100.0);
   EXPECT_DOUBLE_EQ (mid::evaluation::median ({1.0, 3.0, 2.0, 10.0}), 2.5);
   const std::string report = mid::evaluation::formatReport ({{"S_ez", summary}});

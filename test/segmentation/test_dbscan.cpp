@@ -9,20 +9,26 @@ namespace {
 
 /** Cluster points on a line with |x_i - x_j| as the distance. */
 std::vector<int>
-clusterLine (const std::vector<double>& x, double eps, std::size_t min_samples,
-             std::vector<bool>* core = nullptr, bool reverse_listing = false)
+clusterLine (const std::vector<double>& x,
+             double eps,
+             std::size_t min_samples,
+             std::vector<bool>* core = nullptr,
+             bool reverse_listing = false)
 {
   mid::DBSCAN dbscan;
   dbscan.setMinSamples (min_samples);
-  auto all_pairs = mid::makeAllPairsRegionQuery (
-      x.size (), eps, [&x] (std::size_t i, std::size_t j) { return std::abs (x[i] - x[j]); });
-  const mid::DBSCAN::RegionQuery query = [&] (std::size_t i, std::vector<mid::DBSCAN::Neighbor>& out) {
+  auto all_pairs =
+      mid::makeAllPairsRegionQuery (x.size(), eps, [&x] (std::size_t i, std::size_t j) {
+        return std::abs (x[i] - x[j]);
+      });
+  const mid::DBSCAN::RegionQuery query = [&] (std::size_t i,
+                                              std::vector<mid::DBSCAN::Neighbor>& out) {
     all_pairs (i, out);
     if (reverse_listing)
-      std::reverse (out.begin (), out.end ());
+      std::reverse (out.begin(), out.end());
   };
   std::vector<int> labels;
-  dbscan.cluster (x.size (), query, labels, core);
+  dbscan.cluster (x.size(), query, labels, core);
   return labels;
 }
 
@@ -42,13 +48,13 @@ TEST (DBSCAN, ChainsConnectAndGapsSeparate)
 {
   std::vector<double> x;
   for (int i = 0; i <= 10; ++i)
-    x.push_back (i);          // one chain, 11 items
+    x.push_back (i); // one chain, 11 items
   for (int i = 0; i < 4; ++i)
     x.push_back (20.0 + 0.5 * i); // a second group past a gap
   const auto labels = clusterLine (x, 1.0, 3);
   for (int i = 0; i <= 10; ++i)
     EXPECT_EQ (labels[static_cast<std::size_t> (i)], 0);
-  for (std::size_t i = 11; i < x.size (); ++i)
+  for (std::size_t i = 11; i < x.size(); ++i)
     EXPECT_EQ (labels[i], 1);
   // Too sparse for min samples 4 in the chain: the chain is noise, the dense group stays.
   const auto sparse = clusterLine (x, 1.0, 4);
@@ -60,7 +66,8 @@ TEST (DBSCAN, ChainsConnectAndGapsSeparate)
 TEST (DBSCAN, ABorderBetweenTwoClustersJoinsTheNearestCoreWithTiesToTheSmallerIndex)
 {
   // Item 0 at 2.0 is 1.0 from the core at 1.0 (index 6) and from the core at 3.0 (index 1).
-  const std::vector<double> x{2.0, 3.0, 3.25, 3.5, 3.75, 4.0, 1.0, 0.75, 0.5, 0.25, 0.0};
+  const std::vector<double> x{
+      2.0, 3.0, 3.25, 3.5, 3.75, 4.0, 1.0, 0.75, 0.5, 0.25, 0.0};
   std::vector<bool> core;
   auto labels = clusterLine (x, 1.0, 4, &core);
   EXPECT_FALSE (core[0]);
@@ -85,5 +92,5 @@ TEST (DBSCAN, MinSamplesOneMakesEveryItemACluster)
 {
   const std::vector<double> x{0, 10, 20};
   EXPECT_EQ (clusterLine (x, 1.0, 1), (std::vector<int>{0, 1, 2}));
-  EXPECT_TRUE (clusterLine ({}, 1.0, 3).empty ());
+  EXPECT_TRUE (clusterLine ({}, 1.0, 3).empty());
 }

@@ -12,16 +12,17 @@ namespace {
   * displacement of q.
   */
 mid::TripletGeometry
-makeGeometry (const Eigen::Matrix3f& p, const Eigen::Isometry3f& motion,
-              const Eigen::Vector3f& q_offset = Eigen::Vector3f::Zero ())
+makeGeometry (const Eigen::Matrix3f& p,
+              const Eigen::Isometry3f& motion,
+              const Eigen::Vector3f& q_offset = Eigen::Vector3f::Zero())
 {
   mid::TripletGeometry g;
   g.p = p;
-  g.q = (motion * p).colwise () + q_offset;
-  g.rotation = motion.linear ();
-  g.translation = motion.translation () + q_offset;
-  g.p_centroid = g.p.rowwise ().mean ();
-  g.q_centroid = g.q.rowwise ().mean ();
+  g.q = (motion * p).colwise() + q_offset;
+  g.rotation = motion.linear();
+  g.translation = motion.translation() + q_offset;
+  g.p_centroid = g.p.rowwise().mean();
+  g.q_centroid = g.q.rowwise().mean();
   return g;
 }
 
@@ -37,7 +38,8 @@ triangle (float scale, float z)
 
 TEST (TripletDistance, IsZeroForTheSameMotionAndSixTimesAPureOffset)
 {
-  const Eigen::Isometry3f motion = mid::test::rigidMotion ({0.3f, 0.0f, 0.1f}, 0.7f, {0, 1, 0});
+  const Eigen::Isometry3f motion =
+      mid::test::rigidMotion ({0.3f, 0.0f, 0.1f}, 0.7f, {0, 1, 0});
   const auto a = makeGeometry (triangle (0.05f, 0.8f), motion);
   const auto b = makeGeometry (triangle (0.04f, 0.9f), motion);
   EXPECT_NEAR (mid::tripletDistance (a, b), 0.0f, 1e-6f);
@@ -55,28 +57,36 @@ TEST (TripletDistance, LowerBoundNeverExceedsTheDistance)
   std::uniform_real_distribution<float> unit (-1.0f, 1.0f);
   for (int trial = 0; trial < 2000; ++trial) {
     auto random_geometry = [&] () {
-      Eigen::Matrix3f p = Eigen::Matrix3f::NullaryExpr ([&] () { return 0.1f * unit (rng); });
-      p.row (2).array () += 0.8f;
-      const auto motion = mid::test::rigidMotion ({unit (rng), unit (rng), unit (rng)}, 3.0f * unit (rng),
-                                                  {unit (rng), unit (rng), unit (rng) + 2.0f});
-      const Eigen::Vector3f noise (0.01f * unit (rng), 0.01f * unit (rng), 0.01f * unit (rng));
+      Eigen::Matrix3f p =
+          Eigen::Matrix3f::NullaryExpr ([&] () { return 0.1f * unit (rng); });
+      p.row (2).array() += 0.8f;
+      const auto motion =
+          mid::test::rigidMotion ({unit (rng), unit (rng), unit (rng)},
+                                  3.0f * unit (rng),
+                                  {unit (rng), unit (rng), unit (rng) + 2.0f});
+      const Eigen::Vector3f noise (
+          0.01f * unit (rng), 0.01f * unit (rng), 0.01f * unit (rng));
       return makeGeometry (p, motion, noise);
     };
-    const auto a = random_geometry (), b = random_geometry ();
-    EXPECT_LE (mid::tripletDistanceLowerBound (a, b), mid::tripletDistance (a, b) * (1.0f + 1e-5f) + 1e-6f);
+    const auto a = random_geometry(), b = random_geometry();
+    EXPECT_LE (mid::tripletDistanceLowerBound (a, b),
+               mid::tripletDistance (a, b) * (1.0f + 1e-5f) + 1e-6f);
   }
 }
 
 TEST (TripletDistance, InversionSwapsTheTrianglesAndInvertsThePose)
 {
-  const Eigen::Isometry3f motion = mid::test::rigidMotion ({0.2f, -0.1f, 0.05f}, 1.3f, {1, 2, 3});
+  const Eigen::Isometry3f motion =
+      mid::test::rigidMotion ({0.2f, -0.1f, 0.05f}, 1.3f, {1, 2, 3});
   const auto g = makeGeometry (triangle (0.05f, 0.8f), motion);
   const auto inverse = mid::invertTripletGeometry (g);
   EXPECT_EQ (inverse.p, g.q);
   EXPECT_EQ (inverse.q, g.p);
-  const Eigen::Matrix3f mapped = (inverse.rotation * inverse.p).colwise () + inverse.translation;
-  EXPECT_LT ((mapped - inverse.q).cwiseAbs ().maxCoeff (), 1e-6f);
-  EXPECT_NEAR (mid::tripletDistance (inverse, mid::invertTripletGeometry (g)), 0.0f, 1e-6f);
+  const Eigen::Matrix3f mapped =
+      (inverse.rotation * inverse.p).colwise() + inverse.translation;
+  EXPECT_LT ((mapped - inverse.q).cwiseAbs().maxCoeff(), 1e-6f);
+  EXPECT_NEAR (
+      mid::tripletDistance (inverse, mid::invertTripletGeometry (g)), 0.0f, 1e-6f);
   // A triplet and its inverse do not cluster together: far apart in transformation space.
   EXPECT_GT (mid::tripletDistance (g, inverse), 0.1f);
 }

@@ -8,8 +8,7 @@
 namespace mid {
 
 /** \brief Which method groups the self-matches into pairs of instances. */
-enum class Grouping
-{
+enum class Grouping {
   /** \brief Ours: PPF triplet rejector + transformation-space DBSCAN (the paper). */
   triplets,
   /** \brief PCL's GeometricConsistencyGrouping on the same self-matches (a peer). */
@@ -135,6 +134,7 @@ struct DiscoveryParameters
   * \return true if all are valid
   */
 bool
-validateDiscoveryParameters (const DiscoveryParameters& parameters, std::string& problem);
+validateDiscoveryParameters (const DiscoveryParameters& parameters,
+                             std::string& problem);
 
 } // namespace mid

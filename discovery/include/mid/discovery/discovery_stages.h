@@ -16,7 +16,9 @@ namespace mid {
   * \return false (with a PCL_ERROR) if a stage refuses its input or parameters
   */
 bool
-discoverFromKeypoints (const DiscoveryParameters& parameters, DiscoveryResult& result,
-                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr);
+discoverFromKeypoints (
+    const DiscoveryParameters& parameters,
+    DiscoveryResult& result,
+    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr);
 
 } // namespace mid

@@ -40,9 +40,15 @@ public:
     */
   ///@{
   void
-  setParameters (const DiscoveryParameters& parameters) { parameters_ = parameters; }
+  setParameters (const DiscoveryParameters& parameters)
+  {
+    parameters_ = parameters;
+  }
   const DiscoveryParameters&
-  getParameters () const { return parameters_; }
+  getParameters () const
+  {
+    return parameters_;
+  }
   ///@}
 
   /** \brief Run the pipeline on the input cloud.

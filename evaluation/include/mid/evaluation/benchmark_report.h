@@ -54,11 +54,20 @@ struct ScoreSummary
     */
   ///@{
   static double
-  precision (int tp, int fp) { return tp + fp > 0 ? static_cast<double> (tp) / (tp + fp) : 0.0; }
+  precision (int tp, int fp)
+  {
+    return tp + fp > 0 ? static_cast<double> (tp) / (tp + fp) : 0.0;
+  }
   static double
-  recall (int tp, int fn) { return tp + fn > 0 ? static_cast<double> (tp) / (tp + fn) : 0.0; }
+  recall (int tp, int fn)
+  {
+    return tp + fn > 0 ? static_cast<double> (tp) / (tp + fn) : 0.0;
+  }
   static double
-  f1 (double p, double r) { return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0; }
+  f1 (double p, double r)
+  {
+    return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0;
+  }
   ///@}
 };
 

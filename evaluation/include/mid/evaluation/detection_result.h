@@ -13,7 +13,7 @@ namespace evaluation {
 struct DetectedInstance
 {
   /** \brief Model -> camera pose, metres. */
-  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
   /** \brief Pixel positions (u column, v row) of its keypoints. */
   std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>> keypoints;
 

@@ -60,7 +60,9 @@ struct FrameScore
   * \return the counts and the relative pose errors
   */
 FrameScore
-scoreFrame (const GroundTruthFrame& truth, const DetectionResult& result, double min_inside = 0.9);
+scoreFrame (const GroundTruthFrame& truth,
+            const DetectionResult& result,
+            double min_inside = 0.9);
 
 } // namespace evaluation
 } // namespace mid

@@ -17,7 +17,7 @@ struct GroundTruthInstance
   /** \brief Object type (BOP obj_id). */
   int object_id = 0;
   /** \brief Model -> camera pose, metres. */
-  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity ();
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
   /** \brief Visible part: bounding box (x, y, width, height) and, when available, the mask
     * (CV_8UC1, non-zero = visible); the mask decides when present, the box otherwise.
     */
@@ -37,7 +37,8 @@ struct GroundTruthFrame
   /** \brief The frame's BOP image id. */
   int image_id = 0;
   /** \brief Its annotated instances, in the order of scene_gt.json. */
-  std::vector<GroundTruthInstance, Eigen::aligned_allocator<GroundTruthInstance>> instances;
+  std::vector<GroundTruthInstance, Eigen::aligned_allocator<GroundTruthInstance>>
+      instances;
 
   /** \brief True if pixel (u, v) lies on the visible part of instance k.
     * \param[in] k the instance, < instances.size () (not checked)

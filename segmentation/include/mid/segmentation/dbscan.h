@@ -34,9 +34,15 @@ public:
     */
   ///@{
   void
-  setMinSamples (std::size_t min_samples) { min_samples_ = min_samples; }
+  setMinSamples (std::size_t min_samples)
+  {
+    min_samples_ = min_samples;
+  }
   std::size_t
-  getMinSamples () const { return min_samples_; }
+  getMinSamples () const
+  {
+    return min_samples_;
+  }
   ///@}
 
   /** \brief Cluster n items.
@@ -47,7 +53,9 @@ public:
     * \return the number of clusters
     */
   std::size_t
-  cluster (std::size_t n, const RegionQuery& query, std::vector<int>& labels,
+  cluster (std::size_t n,
+           const RegionQuery& query,
+           std::vector<int>& labels,
            std::vector<bool>* core = nullptr) const;
 
 private:
@@ -63,7 +71,8 @@ private:
   * \return the query, which keeps a copy of distance
   */
 DBSCAN::RegionQuery
-makeAllPairsRegionQuery (std::size_t n, double eps,
+makeAllPairsRegionQuery (std::size_t n,
+                         double eps,
                          std::function<double (std::size_t, std::size_t)> distance);
 
 } // namespace mid

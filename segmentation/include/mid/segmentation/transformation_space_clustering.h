@@ -2,8 +2,8 @@
 
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
-#include <mid/registration/triplet_match.h>
 #include <mid/registration/triplet_cluster.h>
+#include <mid/registration/triplet_match.h>
 
 #include <pcl/recognition/cg/correspondence_grouping.h>
 
@@ -57,7 +57,8 @@ public:
   /** \brief Shared pointer to the const input triplets. */
   using TripletMatchesConstPtr = std::shared_ptr<const TripletMatches>;
   /** \brief One pose per cluster (4x4, Eigen-aligned), as PCL's recognize() returns them. */
-  using Transformations = std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>;
+  using Transformations =
+      std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>;
 
   /** \brief Triplet matches to cluster (indices into the model and scene clouds). Also sets
     * the model-scene correspondences to theirs, as PCL's grouping interface requires them.
@@ -68,7 +69,10 @@ public:
   void
   setInputTriplets (const TripletMatchesConstPtr& triplets);
   const TripletMatchesConstPtr&
-  getInputTriplets () const { return triplets_; }
+  getInputTriplets () const
+  {
+    return triplets_;
+  }
   ///@}
 
   /** \brief Set keypoint matches; the triplets are then made from them by the rejector (the
@@ -76,16 +80,23 @@ public:
     * \param[in] correspondences index_query into the model cloud, index_match into the scene
     */
   void
-  setModelSceneCorrespondences (const pcl::CorrespondencesConstPtr& correspondences) override;
+  setModelSceneCorrespondences (
+      const pcl::CorrespondencesConstPtr& correspondences) override;
 
   /** \brief The rejector that turns correspondences into triplets (when no triplets are set);
     * unset means one with default settings.
     */
   ///@{
   void
-  setTripletRejector (const CorrespondenceRejectorPPFTriplet::Ptr& rejector) { rejector_ = rejector; }
+  setTripletRejector (const CorrespondenceRejectorPPFTriplet::Ptr& rejector)
+  {
+    rejector_ = rejector;
+  }
   const CorrespondenceRejectorPPFTriplet::Ptr&
-  getTripletRejector () const { return rejector_; }
+  getTripletRejector () const
+  {
+    return rejector_;
+  }
   ///@}
 
   /** \brief DBSCAN's eps: the largest distance D between neighbouring triplet matches (metres).
@@ -93,9 +104,15 @@ public:
     */
   ///@{
   void
-  setClusterDistance (float eps) { eps_ = eps; }
+  setClusterDistance (float eps)
+  {
+    eps_ = eps;
+  }
   float
-  getClusterDistance () const { return eps_; }
+  getClusterDistance () const
+  {
+    return eps_;
+  }
   ///@}
 
   /** \brief DBSCAN's min samples (a core triplet has this many within eps, itself included), so
@@ -104,9 +121,15 @@ public:
     */
   ///@{
   void
-  setMinClusterSize (std::size_t size) { min_cluster_size_ = size; }
+  setMinClusterSize (std::size_t size)
+  {
+    min_cluster_size_ = size;
+  }
   std::size_t
-  getMinClusterSize () const { return min_cluster_size_; }
+  getMinClusterSize () const
+  {
+    return min_cluster_size_;
+  }
   ///@}
 
   /** \brief Merge clusters that are the same pair of instances in opposite directions.
@@ -114,9 +137,15 @@ public:
     */
   ///@{
   void
-  setMergeInverseClusters (bool merge) { merge_inverse_ = merge; }
+  setMergeInverseClusters (bool merge)
+  {
+    merge_inverse_ = merge;
+  }
   bool
-  getMergeInverseClusters () const { return merge_inverse_; }
+  getMergeInverseClusters () const
+  {
+    return merge_inverse_;
+  }
   ///@}
 
   /** \brief Most neighbour entries (16 bytes each) kept in memory. Within this budget each
@@ -125,9 +154,15 @@ public:
     */
   ///@{
   void
-  setMaxStoredNeighbors (std::size_t entries) { max_stored_neighbors_ = entries; }
+  setMaxStoredNeighbors (std::size_t entries)
+  {
+    max_stored_neighbors_ = entries;
+  }
   std::size_t
-  getMaxStoredNeighbors () const { return max_stored_neighbors_; }
+  getMaxStoredNeighbors () const
+  {
+    return max_stored_neighbors_;
+  }
   ///@}
 
   /** \brief Cluster; one group of correspondences per cluster (PCL's grouping interface).
@@ -144,7 +179,8 @@ public:
     * \param[out] clustered_corrs each cluster's distinct keypoint pairs, in the same order
     */
   void
-  recognize (Transformations& transformations, std::vector<pcl::Correspondences>& clustered_corrs);
+  recognize (Transformations& transformations,
+             std::vector<pcl::Correspondences>& clustered_corrs);
   /** \brief Cluster and return one pose per cluster (mapping its set P onto its set Q); empty
     * (with a PCL_ERROR) on bad input.
     * \param[out] transformations one pose per cluster, in the order of getClusters()
@@ -154,13 +190,19 @@ public:
 
   /** \brief The clusters of the last run, with poses, point sets and member triplets. */
   const TripletClusters&
-  getClusters () const { return clusters_; }
+  getClusters () const
+  {
+    return clusters_;
+  }
 
   /** \brief The triplets of the last run (given, or made by the rejector); cluster members
     * index into these.
     */
   const TripletMatches&
-  getTriplets () const { return used_triplets_; }
+  getTriplets () const
+  {
+    return used_triplets_;
+  }
 
 protected:
   /** \brief PCL's hook behind cluster(): makes the triplets if none are given, checks the

@@ -37,7 +37,8 @@ struct TripletGeometry
   * \return the triangles, the pose and the centroids
   */
 TripletGeometry
-makeTripletGeometry (const TripletMatch& triplet, const KeypointCloud& source,
+makeTripletGeometry (const TripletMatch& triplet,
+                     const KeypointCloud& source,
                      const KeypointCloud& target);
 
 /** \brief The same triplet used the other way round: Q -> P with the inverse pose.

@@ -14,7 +14,7 @@ template <typename PointT>
 bool
 MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
 {
-  result = DiscoveryResult ();
+  result = DiscoveryResult();
   pcl::StopWatch total;
   pcl::StopWatch watch;
   SIFTKeypointExtractor<PointT> extractor;
@@ -24,19 +24,19 @@ MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
   extractor.setMaxKeypoints (parameters_.max_keypoints);
   extractor.setContrastThreshold (parameters_.contrast_threshold);
   extractor.setNormalRadius (parameters_.normal_radius);
-  result.keypoints = pcl::make_shared<KeypointCloud> ();
-  result.descriptors = pcl::make_shared<SIFTDescriptorCloud> ();
+  result.keypoints = pcl::make_shared<KeypointCloud>();
+  result.descriptors = pcl::make_shared<SIFTDescriptorCloud>();
   if (!extractor.compute (*result.keypoints, *result.descriptors)) {
-    result = DiscoveryResult ();
+    result = DiscoveryResult();
     return false;
   }
-  result.image_keypoints = extractor.getImageKeypoints ();
-  result.timing_ms.emplace_back ("features", watch.getTime ());
+  result.image_keypoints = extractor.getImageKeypoints();
+  result.timing_ms.emplace_back ("features", watch.getTime());
 
   // Only PCL's Hough3D peer needs the surface with normals (for its BOARD reference frames).
   pcl::PointCloud<pcl::PointNormal>::Ptr surface;
   if (parameters_.grouping == Grouping::hough3d) {
-    watch.reset ();
+    watch.reset();
     pcl::PointCloud<pcl::Normal> normals;
     pcl::IntegralImageNormalEstimation<PointT, pcl::Normal> estimation;
     estimation.setNormalEstimationMethod (estimation.AVERAGE_3D_GRADIENT);
@@ -44,22 +44,22 @@ MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
     estimation.setNormalSmoothingSize (10.0f);
     estimation.setInputCloud (input_);
     estimation.compute (normals);
-    surface = pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> ();
-    for (std::size_t i = 0; i < input_->size (); ++i)
+    surface = pcl::make_shared<pcl::PointCloud<pcl::PointNormal>>();
+    for (std::size_t i = 0; i < input_->size(); ++i)
       if (pcl::isXYZFinite ((*input_)[i]) && pcl::isNormalFinite (normals[i])) {
         pcl::PointNormal point;
-        point.getVector3fMap () = (*input_)[i].getVector3fMap ();
-        point.getNormalVector3fMap () = normals[i].getNormalVector3fMap ();
+        point.getVector3fMap() = (*input_)[i].getVector3fMap();
+        point.getNormalVector3fMap() = normals[i].getNormalVector3fMap();
         point.curvature = normals[i].curvature;
         surface->push_back (point);
       }
-    result.timing_ms.emplace_back ("surface_normals", watch.getTime ());
+    result.timing_ms.emplace_back ("surface_normals", watch.getTime());
   }
   if (!discoverFromKeypoints (parameters_, result, surface)) {
-    result = DiscoveryResult ();
+    result = DiscoveryResult();
     return false;
   }
-  result.timing_ms.emplace_back ("total", total.getTime ());
+  result.timing_ms.emplace_back ("total", total.getTime());
   return true;
 }
 
