@@ -1,7 +1,10 @@
 #define PCL_NO_PRECOMPILE
+#include <mid/io/pcd_reader.h>
 #include <mid/registration/object_model_io.h>
 
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
+#include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 #include <pcl/register_point_struct.h>
@@ -146,17 +149,21 @@ loadObjectModel (const std::string& path, ObjectModel& model)
                  model);
   const std::string data_path = dataPathOf (path);
   pcl::PointCloud<ModelFilePoint> rows;
-  {
-    const auto level = pcl::console::getVerbosityLevel();
-    pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
-    const int status = std::filesystem::exists (data_path)
-                           ? pcl::io::loadPCDFile (data_path, rows)
-                           : -1;
-    pcl::console::setVerbosityLevel (level);
-    if (status != 0)
-      return fail ("cannot read the model data '" + data_path +
-                       "' (missing, truncated or corrupt)",
-                   model);
+  pcl::PCLPointCloud2 blob;
+  std::string problem;
+  if (!io::readCheckedPCD (
+          data_path, blob, rows.sensor_origin_, rows.sensor_orientation_, problem))
+    return fail ("cannot read the model data: " + problem, model);
+  if (pcl::getFieldIndex (blob, "landmark") < 0 ||
+      pcl::getFieldIndex (blob, "descriptor") < 0)
+    return fail ("'" + data_path +
+                     "' is not model data (no landmark or descriptor field)",
+                 model);
+  try {
+    pcl::fromPCLPointCloud2 (blob, rows);
+  }
+  catch (const std::exception&) {
+    return fail ("'" + data_path + "' could not be converted (out of memory)", model);
   }
   if (rows.size() != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
     return fail ("'" + data_path + "' holds " + std::to_string (rows.size()) +

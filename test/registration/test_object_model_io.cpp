@@ -3,12 +3,16 @@
 #include <mid/registration/object_model_io.h>
 
 #include <gtest/gtest.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 namespace {
 
@@ -108,7 +112,34 @@ TEST_F (ObjectModelIO, RefusesMissingFiles)
 
 TEST_F (ObjectModelIO, RefusesATruncatedDataFile)
 {
-  fs::resize_file (dir_ / "model.pcd", fs::file_size (dir_ / "model.pcd") / 2);
+  // Every cut: inside the header (a cut after "POINTS" and before "DATA" once made PCL's
+  // conversion bind a reference into an empty cloud, found by the sanitized CI run) and
+  // inside the body.
+  const fs::path data = dir_ / "model.pcd";
+  std::ifstream in (data, std::ios::binary);
+  const std::string full ((std::istreambuf_iterator<char> (in)),
+                          std::istreambuf_iterator<char>());
+  in.close();
+  const std::size_t body = full.find ("DATA");
+  ASSERT_NE (body, std::string::npos);
+  std::vector<std::size_t> cuts;
+  for (std::size_t cut = 0; cut < body + 20; ++cut)
+    cuts.push_back (cut);
+  for (std::size_t cut = body + 20; cut < full.size(); cut += full.size() / 17)
+    cuts.push_back (cut);
+  cuts.push_back (full.size() - 1);
+  for (const std::size_t cut : cuts) {
+    std::ofstream (data, std::ios::binary | std::ios::trunc) << full.substr (0, cut);
+    SCOPED_TRACE ("data file cut at byte " + std::to_string (cut));
+    expectRefused();
+  }
+}
+
+TEST_F (ObjectModelIO, RefusesDataOfAnotherKind)
+{
+  pcl::PointCloud<pcl::PointXYZ> points;
+  points.push_back (pcl::PointXYZ (0.0f, 0.0f, 0.5f));
+  ASSERT_EQ (pcl::io::savePCDFileBinary ((dir_ / "model.pcd").string(), points), 0);
   expectRefused();
 }
 
