@@ -29,7 +29,7 @@ struct Options
   mid::apps::SceneInput scene;
   std::string json_path;
   mid::apps::VisualOutputs pictures;
-  float max_descriptor_distance = 200.0f;
+  float max_descriptor_distance = 350.0f;
   float inlier_threshold = 0.005f;
   int min_inliers = 5;
   float min_inlier_ratio = 0.125f;

@@ -104,6 +104,12 @@ printHelp (const char* program)
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
   line ("-seed S", "seed of every random choice", d.seed);
+  print_info (
+      "  -keep_overlaps      keep instances that lie on one physical object (the "
+      "paper's\n");
+  print_info ("                      behaviour; by default such models are merged and "
+              "such\n");
+  print_info ("                      instances removed)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
   print_info ("  -grouping G         triplets (ours, default), gcg "
@@ -136,6 +142,7 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-min_kp_dist", p.min_keypoint_distance);
   parse_argument (argc, argv, "-ratio", p.max_distance_ratio);
   p.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
+  p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
   parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
   float degrees = 0.0f;
   if (parse_argument (argc, argv, "-ppf_angle", degrees) >= 0)

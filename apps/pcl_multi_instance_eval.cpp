@@ -27,8 +27,9 @@ printHelp (const char* program)
 {
   print_info ("Score discovery results against BOP ground truth (Abbeloos et al. 3DV "
               "2017 rules).\n\n");
-  print_info ("Usage: %s DATASET_DIR RESULTS_DIR [-report FILE] [-min_inside F]\n\n",
-              program);
+  print_info (
+      "Usage: %s DATASET_DIR RESULTS_DIR [-report FILE] [-min_inside F] [-frames]\n\n",
+      program);
   print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with "
               "scene_gt.json,\n");
   print_info ("                scene_gt_info.json and mask_visib/; an optional "
@@ -42,6 +43,10 @@ printHelp (const char* program)
   print_info ("  -min_inside F share of an instance's keypoints that must lie on the "
               "annotated\n");
   print_info ("                instance (default 0.9, the paper's)\n");
+  print_info ("  -frames       also print each frame's counts on instances (true and "
+              "false\n");
+  print_info (
+      "                positives, false negatives) and its number of objects\n");
 }
 
 std::string
@@ -88,6 +93,7 @@ main (int argc, char** argv)
   double min_inside = 0.9;
   pcl::console::parse_argument (argc, argv, "-report", report_path);
   pcl::console::parse_argument (argc, argv, "-min_inside", min_inside);
+  const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
   if (!(min_inside > 0.0 && min_inside <= 1.0)) {
     print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n",
                  min_inside);
@@ -128,7 +134,16 @@ main (int argc, char** argv)
         ++missing;
       else if (!mid::evaluation::readDetectionResult (result_path.string(), result))
         return 1;
-      summary.add (mid::evaluation::scoreFrame (frame, result, min_inside), result);
+      const auto score = mid::evaluation::scoreFrame (frame, result, min_inside);
+      if (per_frame)
+        std::printf ("%s/%06d: %zu objects, instances TP %d FP %d FN %d\n",
+                     scene.c_str(),
+                     image,
+                     result.objects.size(),
+                     score.instance_tp,
+                     score.instance_fp,
+                     score.instance_fn);
+      summary.add (score, result);
     }
   }
   const std::string report = mid::evaluation::formatReport (scenarios);

@@ -3,6 +3,7 @@
 #include <mid/discovery/discovery_stages.h>
 #include <mid/features/self_matcher.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
+#include <mid/registration/instance_overlap.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
@@ -12,6 +13,7 @@
 #include <pcl/common/time.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -85,6 +87,27 @@ mergeModels (const DiscoveryParameters& p,
       models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
     }
   return true;
+}
+
+/** Keep one instance per physical object, merging models that share one (see
+  * DiscoveryParameters::resolve_overlaps), and drop models left with a single instance.
+  */
+void
+resolveOverlaps (const DiscoveryParameters& p,
+                 const KeypointCloud& frame,
+                 ObjectModels& models)
+{
+  if (mergeOverlappingModels (frame, models) > 0)
+    for (auto& model : models)
+      refineModel (model, frame, p.refinement_iterations);
+  for (auto& model : models)
+    removeOverlappingInstances (frame, model);
+  models.erase (std::remove_if (models.begin(),
+                                models.end(),
+                                [] (const ObjectModel& model) {
+                                  return model.instances.size() < 2;
+                                }),
+                models.end());
 }
 
 /** Look for each model's instances among the keypoints no model uses yet. */
@@ -220,8 +243,12 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   watch.reset();
   if (p.merge_models && !mergeModels (p, *result.keypoints, result.models))
     return false;
+  if (p.resolve_overlaps)
+    resolveOverlaps (p, *result.keypoints, result.models);
   if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
     return false;
+  if (p.resolve_overlaps)
+    resolveOverlaps (p, *result.keypoints, result.models);
   result.timing_ms.emplace_back ("detection", watch.getTime());
   return true;
 }

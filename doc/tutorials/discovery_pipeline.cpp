@@ -41,7 +41,7 @@ main (int argc, char** argv)
   mid::SelfMatcher matcher;
   matcher.setInputKeypoints (keypoints);
   matcher.setInputDescriptors (descriptors);
-  matcher.setMaxDescriptorDistance (200.0f);
+  matcher.setMaxDescriptorDistance (350.0f);
   matcher.setMinKeypointDistance (0.01f);
   auto matches = pcl::make_shared<pcl::Correspondences>();
   if (!matcher.match (*matches))

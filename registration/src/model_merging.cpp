@@ -43,7 +43,8 @@ mergeModel (ObjectModel& into,
             const Eigen::Matrix4f& into_to_from,
             const std::vector<std::pair<int, int>>& same_landmarks,
             float max_angle,
-            float max_distance)
+            float max_distance,
+            std::vector<int>* landmark_map)
 {
   const Eigen::Matrix4f from_to_into = into_to_from.inverse();
   std::map<int, int> landmark_of;
@@ -73,6 +74,11 @@ mergeModel (ObjectModel& into,
     addOrJoin (into, moved, max_angle, max_distance);
   }
   updateModelDiameter (into);
+  if (landmark_map) {
+    landmark_map->assign (from.landmarks.size(), -1);
+    for (const auto& [l_from, l_into] : landmark_of)
+      (*landmark_map)[static_cast<std::size_t> (l_from)] = l_into;
+  }
 }
 
 void

@@ -1,4 +1,5 @@
 #include <mid/registration/rigid_transform.h>
+#include <mid/segmentation/chain_splitting.h>
 #include <mid/segmentation/dbscan.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 #include <mid/segmentation/triplet_distance.h>
@@ -67,6 +68,38 @@ estimateCluster (const TripletMatches& triplets,
                   q)
                      .norm();
   }
+}
+
+/** Largest rotation of a cluster that splitChainCluster() may split: rows of copies are
+  * related by translations.
+  */
+constexpr float kMaxChainRotation = static_cast<float> (20.0 * M_PI / 180.0);
+
+/** Replace every cluster that links a row of copies by its parts (splitChainCluster()). */
+void
+splitChains (const TripletMatches& triplets,
+             const KeypointCloud& keypoints,
+             TripletClusters& clusters)
+{
+  TripletClusters split;
+  for (const auto& cluster : clusters) {
+    const auto parts =
+        splitChainCluster (cluster, triplets, keypoints, kMaxChainRotation);
+    if (parts.size() < 2) {
+      split.push_back (cluster);
+      continue;
+    }
+    for (const auto& members : parts) {
+      TripletCluster part;
+      for (const std::size_t m : members) {
+        part.triplets.push_back (cluster.triplets[m]);
+        part.reversed.push_back (cluster.reversed[m]);
+      }
+      estimateCluster (triplets, part, keypoints, keypoints);
+      split.push_back (part);
+    }
+  }
+  clusters.swap (split);
 }
 
 /** True if most of `other`'s triplets, used reversed, agree with `cluster`'s pose within eps:
@@ -296,6 +329,8 @@ TransformationSpaceClustering::clusterCorrespondences (
     clusters.swap (kept);
     std::sort (clusters.begin(), clusters.end(), larger);
   }
+  if (split_chains_ && one_frame)
+    splitChains (used_triplets_, *input_, clusters);
 
   clusters_ = clusters;
   for (const auto& cluster : clusters_)

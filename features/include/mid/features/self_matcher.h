@@ -67,7 +67,7 @@ public:
 
   /** \brief Largest L2 descriptor distance of a kept match (the paper's threshold that turns N
     * keypoints into M <= N matches). OpenCV's SIFT descriptors have an L2 norm of about 512.
-    * Default 200; must be > 0 (match() fails otherwise).
+    * Default 350; must be > 0 (match() fails otherwise).
     */
   ///@{
   void
@@ -139,7 +139,7 @@ public:
 private:
   KeypointCloud::ConstPtr keypoints_;
   SIFTDescriptorCloud::ConstPtr descriptors_;
-  float max_descriptor_distance_ = 200.0f;
+  float max_descriptor_distance_ = 350.0f;
   float min_keypoint_distance_ = 0.01f;
   float max_distance_ratio_ = 1.0f;
   bool mutual_check_ = false;

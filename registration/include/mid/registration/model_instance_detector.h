@@ -101,7 +101,7 @@ public:
   }
   ///@}
 
-  /** \brief Largest L2 descriptor distance of a landmark -> keypoint match. Default 200; must be
+  /** \brief Largest L2 descriptor distance of a landmark -> keypoint match. Default 350; must be
     * > 0.
     */
   ///@{
@@ -218,7 +218,7 @@ private:
   KeypointCloud::ConstPtr keypoints_;
   SIFTDescriptorCloud::ConstPtr descriptors_;
   pcl::IndicesConstPtr candidates_;
-  float max_descriptor_distance_ = 200.0f;
+  float max_descriptor_distance_ = 350.0f;
   float inlier_threshold_ = 0.005f;
   std::size_t min_inliers_ = 5;
   float min_inlier_ratio_ = 0.125f;

@@ -16,6 +16,8 @@ namespace mid {
   * \param[in] max_angle, max_distance instances of both models whose poses coincide within
   *            these (radians, metres) are one instance, and their observations are joined
   *
+  * \param[out] landmark_map if given, for every landmark of `from` its index in `into`
+  *
   * `from`'s other landmarks are appended (moved into `into`'s frame), its descriptors appended,
   * and its instances re-expressed as instances of `into`.
   */
@@ -25,7 +27,8 @@ mergeModel (ObjectModel& into,
             const Eigen::Matrix4f& into_to_from,
             const std::vector<std::pair<int, int>>& same_landmarks,
             float max_angle,
-            float max_distance);
+            float max_distance,
+            std::vector<int>* landmark_map = nullptr);
 
 /** \brief Add a detected instance to a model and extend the model with its observations'
   * descriptors; an instance whose pose coincides with an existing one is joined to it.

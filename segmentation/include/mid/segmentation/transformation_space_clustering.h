@@ -148,6 +148,24 @@ public:
   }
   ///@}
 
+  /** \brief Split clusters that link a regular row of copies (one relative pose between
+    * neighbours) into one cluster per pair of neighbouring copies, with splitChainCluster();
+    * only for triplets within one frame, only for poses that rotate less than 20 degrees.
+    * Default true; false gives the paper's behaviour.
+    */
+  ///@{
+  void
+  setSplitChains (bool split)
+  {
+    split_chains_ = split;
+  }
+  bool
+  getSplitChains () const
+  {
+    return split_chains_;
+  }
+  ///@}
+
   /** \brief Most neighbour entries (16 bytes each) kept in memory. Within this budget each
     * pair of triplets is compared once; beyond it every region query compares again (same
     * result, about four times the work). Default 8 Mi entries (128 MiB).
@@ -223,6 +241,7 @@ private:
   float eps_ = 0.035f;
   std::size_t min_cluster_size_ = 14;
   bool merge_inverse_ = true;
+  bool split_chains_ = true;
   std::size_t max_stored_neighbors_ = std::size_t{8} << 20;
   TripletMatches used_triplets_;
   TripletClusters clusters_;

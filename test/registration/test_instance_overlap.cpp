@@ -1,0 +1,160 @@
+#include "rigid_motion.h"
+
+#include <mid/registration/instance_overlap.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+using mid::test::poseError;
+using mid::test::rigidMotion;
+
+constexpr int kLandmarks = 20;
+
+/** Three copies of one object (20 points on a 10 x 8 cm face) at known poses, 20 cm apart. */
+class InstanceOverlap : public ::testing::Test
+{
+protected:
+  void
+  SetUp () override
+  {
+    std::mt19937 rng (5);
+    std::uniform_real_distribution<float> x (-0.05f, 0.05f), y (-0.04f, 0.04f);
+    for (int l = 0; l < kLandmarks; ++l)
+      object_.emplace_back (x (rng), y (rng), 0.0f);
+    poses_ = {rigidMotion (Eigen::Vector3f (-0.2f, 0.0f, 0.8f), 0.3f).matrix(),
+              rigidMotion (Eigen::Vector3f (0.0f, 0.05f, 0.85f), -0.8f).matrix(),
+              rigidMotion (Eigen::Vector3f (0.2f, 0.0f, 0.8f), 1.9f).matrix()};
+    for (const auto& pose : poses_)
+      for (const auto& p : object_) {
+        pcl::PointNormal k;
+        k.getVector3fMap() =
+            pose.topLeftCorner<3, 3>() * p + pose.topRightCorner<3, 1>();
+        keypoints_.push_back (k);
+      }
+  }
+
+  /** A model of landmarks [first, last) in a frame moved by `frame` from the object's, with
+    * instances on the given copies.
+    */
+  mid::ObjectModel
+  modelOf (int first,
+           int last,
+           const Eigen::Matrix4f& frame,
+           std::vector<int> copies) const
+  {
+    mid::ObjectModel model;
+    for (int l = first; l < last; ++l) {
+      pcl::PointNormal landmark;
+      landmark.getVector3fMap() =
+          frame.topLeftCorner<3, 3>() * object_[l] + frame.topRightCorner<3, 1>();
+      model.landmarks.push_back (landmark);
+      model.descriptors.push_back (mid::SIFTDescriptor());
+      model.descriptor_landmarks.push_back (l - first);
+    }
+    for (const int copy : copies) {
+      mid::ModelInstance instance;
+      instance.pose = poses_[static_cast<std::size_t> (copy)] * frame.inverse();
+      for (int l = first; l < last; ++l) {
+        instance.keypoints.push_back (copy * kLandmarks + l);
+        instance.landmarks.push_back (l - first);
+      }
+      model.instances.push_back (instance);
+    }
+    mid::updateModelDiameter (model);
+    return model;
+  }
+
+  std::vector<Eigen::Vector3f> object_;
+  std::vector<Eigen::Matrix4f> poses_;
+  mid::KeypointCloud keypoints_;
+};
+
+mid::ModelInstance
+instanceOn (int copy, int first, int last)
+{
+  mid::ModelInstance instance;
+  for (int l = first; l < last; ++l) {
+    instance.keypoints.push_back (copy * kLandmarks + l);
+    instance.landmarks.push_back (l);
+  }
+  return instance;
+}
+
+} // namespace
+
+TEST_F (InstanceOverlap, KeypointsOfOneCopyOverlapThoseOfAnotherDoNot)
+{
+  // Two halves of one face's keypoints overlap; the same halves on two copies do not.
+  EXPECT_TRUE (mid::instancesOverlap (
+      keypoints_, instanceOn (1, 0, 10), instanceOn (1, 10, 20)));
+  EXPECT_FALSE (mid::instancesOverlap (
+      keypoints_, instanceOn (0, 0, 10), instanceOn (1, 10, 20)));
+  EXPECT_FALSE (
+      mid::instancesOverlap (keypoints_, instanceOn (0, 0, 20), instanceOn (2, 0, 20)));
+  EXPECT_FALSE (
+      mid::instancesOverlap (keypoints_, mid::ModelInstance(), instanceOn (0, 0, 20)));
+}
+
+TEST_F (InstanceOverlap, KeepsTheLargerOfTwoInstancesOnOneCopy)
+{
+  mid::ObjectModel model =
+      modelOf (0, kLandmarks, Eigen::Matrix4f::Identity(), {0, 1, 2});
+  // A fourth instance made of a few keypoints of copy 1 (a repeated pattern on its face).
+  mid::ModelInstance echo = instanceOn (1, 0, 6);
+  echo.pose = rigidMotion (Eigen::Vector3f (0.01f, 0.0f, 0.0f)).matrix() * poses_[1];
+  model.instances.insert (model.instances.begin(), echo);
+  EXPECT_EQ (mid::removeOverlappingInstances (keypoints_, model), 1u);
+  ASSERT_EQ (model.instances.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_LT (poseError (model.instances[i].pose, poses_[i]).second, 1e-6);
+}
+
+TEST_F (InstanceOverlap, MergesTwoModelsOfOneObjectIntoTheTruePoses)
+{
+  // Model A knows landmarks 0-11 on copies 0 and 1; model B, in another frame, knows landmarks
+  // 8-19 on copies 1 and 2. They share copy 1 (and landmarks 8-11).
+  const Eigen::Matrix4f frame_b = rigidMotion (Eigen::Vector3f (0.3f, -0.1f, 0.02f),
+                                               1.1f,
+                                               Eigen::Vector3f (1, 2, 3))
+                                      .matrix();
+  mid::ObjectModels models{modelOf (0, 12, Eigen::Matrix4f::Identity(), {0, 1}),
+                           modelOf (8, kLandmarks, frame_b, {1, 2})};
+  EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 1u);
+  ASSERT_EQ (models.size(), 1u);
+  const auto& model = models.front();
+  EXPECT_EQ (model.landmarks.size(), static_cast<std::size_t> (kLandmarks));
+  ASSERT_EQ (model.instances.size(), 3u);
+  // The copies in any order; each pose maps every landmark onto its keypoint.
+  std::vector<bool> found (3, false);
+  for (const auto& instance : model.instances) {
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+      const Eigen::Vector3f landmark =
+          model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
+              .getVector3fMap();
+      const Eigen::Vector3f moved = instance.pose.topLeftCorner<3, 3>() * landmark +
+                                    instance.pose.topRightCorner<3, 1>();
+      EXPECT_LT ((moved - keypoints_[static_cast<std::size_t> (instance.keypoints[o])]
+                              .getVector3fMap())
+                     .norm(),
+                 1e-5f);
+    }
+    found[static_cast<std::size_t> (instance.keypoints.front() / kLandmarks)] = true;
+  }
+  EXPECT_EQ (found, std::vector<bool> (3, true));
+  // The instance on copy 1 holds the observations of both models.
+  for (const auto& instance : model.instances)
+    if (instance.keypoints.front() / kLandmarks == 1) {
+      EXPECT_EQ (instance.keypoints.size(), static_cast<std::size_t> (kLandmarks));
+    }
+}
+
+TEST_F (InstanceOverlap, LeavesModelsOfDifferentCopiesApart)
+{
+  mid::ObjectModels models{modelOf (0, 12, Eigen::Matrix4f::Identity(), {0, 1}),
+                           modelOf (8, kLandmarks, Eigen::Matrix4f::Identity(), {2})};
+  EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 0u);
+  EXPECT_EQ (models.size(), 2u);
+}

@@ -1,0 +1,143 @@
+#include "rigid_motion.h"
+
+#include <mid/registration/triplet_match.h>
+#include <mid/segmentation/chain_splitting.h>
+#include <mid/segmentation/transformation_space_clustering.h>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+
+namespace {
+
+constexpr int kPoints = 12;
+
+/** `copies` copies of 12 points (a 6 x 4 x 3 cm box's surface) in a row: copy k is copy 0
+  * moved by k * step, optionally rotated by `angle` about the vertical per step. Triplets
+  * link every copy k to copy k + 1 (every second one stored reversed, k + 1 -> k, as a
+  * self-match may come in either direction).
+  */
+struct Row
+{
+  Row (int copies, const Eigen::Vector3f& step, float angle = 0.0f)
+  {
+    std::mt19937 rng (3);
+    std::uniform_real_distribution<float> x (-0.03f, 0.03f), y (-0.02f, 0.02f),
+        z (-0.015f, 0.015f);
+    std::vector<Eigen::Vector3f> object;
+    for (int i = 0; i < kPoints; ++i)
+      object.emplace_back (x (rng), y (rng), z (rng));
+    const Eigen::Vector3f origin (-0.2f, 0.0f, 0.9f);
+    for (int k = 0; k < copies; ++k) {
+      const Eigen::Isometry3f pose =
+          mid::test::rigidMotion (origin + static_cast<float> (k) * step,
+                                  static_cast<float> (k) * angle,
+                                  Eigen::Vector3f::UnitY());
+      for (const auto& p : object) {
+        pcl::PointNormal point;
+        point.getVector3fMap() = pose * p;
+        keypoints->push_back (point);
+      }
+    }
+    // The pose of copy k -> k + 1 in the camera frame (rotation about each copy's origin).
+    const Eigen::Isometry3f first = mid::test::rigidMotion (origin);
+    cluster.transformation =
+        (first * mid::test::rigidMotion (step, angle, Eigen::Vector3f::UnitY()) *
+         first.inverse())
+            .matrix();
+    for (int k = 0; k + 1 < copies; ++k)
+      for (int i = 0; i + 2 < kPoints; ++i) {
+        mid::TripletMatch triplet;
+        for (int c = 0; c < 3; ++c) {
+          const int a = k * kPoints + i + c, b = (k + 1) * kPoints + i + c;
+          triplet.correspondences[static_cast<std::size_t> (c)] =
+              i % 2 == 0 ? pcl::Correspondence (a, b, 0.0f)
+                         : pcl::Correspondence (b, a, 0.0f);
+        }
+        triplet.transformation =
+            i % 2 == 0 ? cluster.transformation
+                       : Eigen::Matrix4f (cluster.transformation.inverse());
+        cluster.triplets.push_back (triplets->size());
+        cluster.reversed.push_back (i % 2 != 0);
+        triplets->push_back (triplet);
+        copy_of.push_back (k);
+      }
+    for (int k = 0; k + 1 < copies; ++k)
+      for (int i = 0; i < kPoints; ++i) {
+        cluster.source_indices.push_back (k * kPoints + i);
+        cluster.target_indices.push_back ((k + 1) * kPoints + i);
+      }
+  }
+
+  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
+  std::shared_ptr<mid::TripletMatches> triplets =
+      std::make_shared<mid::TripletMatches>();
+  mid::TripletCluster cluster;
+  std::vector<int> copy_of; ///< the source copy of each triplet
+};
+
+constexpr float kMaxRotation = static_cast<float> (20.0 * M_PI / 180.0);
+
+} // namespace
+
+TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
+{
+  // Four copies 8 cm apart along the row (the box is 6 cm long): three pairs.
+  const Row row (4, Eigen::Vector3f (0.08f, 0.0f, 0.01f));
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 3u);
+  for (std::size_t part = 0; part < parts.size(); ++part) {
+    EXPECT_EQ (parts[part].size(), static_cast<std::size_t> (kPoints - 2));
+    for (const std::size_t m : parts[part])
+      EXPECT_EQ (row.copy_of[m], static_cast<int> (part));
+  }
+}
+
+TEST (ChainSplitting, LeavesAPairOfCopiesWhole)
+{
+  const Row row (2, Eigen::Vector3f (0.0f, 0.0f, 0.09f));
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), row.triplets->size());
+}
+
+TEST (ChainSplitting, LeavesARotatedChainWhole)
+{
+  // Copies turned by 30 degrees each: not a row of translated copies.
+  const Row row (
+      4, Eigen::Vector3f (0.08f, 0.0f, 0.0f), static_cast<float> (30.0 * M_PI / 180.0));
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), row.triplets->size());
+}
+
+TEST (ChainSplitting, TheClustererGivesOneClusterPerPairOfNeighbours)
+{
+  const Row row (5, Eigen::Vector3f (0.075f, 0.0f, 0.0f));
+  mid::TransformationSpaceClustering clustering;
+  clustering.setInputCloud (row.keypoints);
+  clustering.setSceneCloud (row.keypoints);
+  clustering.setInputTriplets (row.triplets);
+  clustering.setMinClusterSize (5);
+  std::vector<pcl::Correspondences> groups;
+  clustering.cluster (groups);
+  ASSERT_EQ (clustering.getClusters().size(), 4u);
+  for (const auto& cluster : clustering.getClusters()) {
+    // Every pair of a cluster links copy k to copy k + 1 for one k, and the pose is the step.
+    const int k = cluster.correspondences.front().index_query / kPoints;
+    for (const auto& c : cluster.correspondences) {
+      EXPECT_EQ (c.index_query / kPoints, k);
+      EXPECT_EQ (c.index_match / kPoints, k + 1);
+    }
+    EXPECT_LT (mid::test::poseError (cluster.transformation, row.cluster.transformation)
+                   .second,
+               1e-5);
+  }
+  clustering.setSplitChains (false);
+  clustering.cluster (groups);
+  EXPECT_EQ (clustering.getClusters().size(), 1u);
+}
