@@ -14,6 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 using pcl::console::print_error;
 using pcl::console::print_info;
@@ -27,9 +30,10 @@ printHelp (const char* program)
 {
   print_info ("Score discovery results against BOP ground truth (Abbeloos et al. 3DV "
               "2017 rules).\n\n");
-  print_info (
-      "Usage: %s DATASET_DIR RESULTS_DIR [-report FILE] [-min_inside F] [-frames]\n\n",
-      program);
+  print_info ("Usage: %s DATASET_DIR RESULTS_DIR [RESULTS_DIR...] [-names A,B,...] "
+              "[-report FILE]\n"
+              "          [-min_inside F] [-frames]\n\n",
+              program);
   print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with "
               "scene_gt.json,\n");
   print_info ("                scene_gt_info.json and mask_visib/; an optional "
@@ -37,8 +41,16 @@ printHelp (const char* program)
   print_info ("                a scene folder name to its scenario name\n");
   print_info ("  RESULTS_DIR   <scene>/<image>.json: results of "
               "pcl_multi_instance_discovery -json\n");
+  print_info ("                (a missing result counts as an empty one and is "
+              "reported); with\n");
   print_info (
-      "                (a missing result counts as an empty one and is reported)\n");
+      "                several (methods on the same frames, e.g. ours and PCL's "
+      "peers), one\n");
+  print_info ("                table per method and a side-by-side table, the first "
+              "method being\n");
+  print_info ("                the reference of the grouping time ratio\n");
+  print_info ("  -names A,B    the methods' names in the tables (default: the folders' "
+              "names)\n");
   print_info ("  -report FILE  also write the report (markdown table) to FILE\n");
   print_info ("  -min_inside F share of an instance's keypoints that must lie on the "
               "annotated\n");
@@ -79,51 +91,22 @@ readScenarios (const fs::path& dataset)
   return names;
 }
 
-} // namespace
-
-int
-main (int argc, char** argv)
+/** Every scene's frames scored against one method's results, per scenario; false if a scene or
+  * a result cannot be read (the reader printed why).
+  */
+bool
+scoreMethod (const std::vector<fs::path>& scenes,
+             const std::map<std::string, std::string>& scenario_of,
+             const fs::path& results,
+             double min_inside,
+             bool per_frame,
+             std::map<std::string, mid::evaluation::ScoreSummary>& scenarios)
 {
-  if (argc < 3 || pcl::console::find_switch (argc, argv, "-h")) {
-    printHelp (argv[0]);
-    return argc < 3 && !pcl::console::find_switch (argc, argv, "-h") ? 1 : 0;
-  }
-  const fs::path dataset (argv[1]), results (argv[2]);
-  std::string report_path;
-  double min_inside = 0.9;
-  pcl::console::parse_argument (argc, argv, "-report", report_path);
-  pcl::console::parse_argument (argc, argv, "-min_inside", min_inside);
-  const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
-  if (!(min_inside > 0.0 && min_inside <= 1.0)) {
-    print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n",
-                 min_inside);
-    return 1;
-  }
-  if (!fs::is_directory (dataset) || !fs::is_directory (results)) {
-    print_error ("'%s' or '%s' is not a folder.\n", argv[1], argv[2]);
-    return 1;
-  }
-  mid::io::StagedFiles outputs;
-  const std::string report_temporary =
-      report_path.empty() ? std::string() : outputs.stage (report_path);
-  if (!report_path.empty() && report_temporary.empty())
-    return 1;
-  const auto scenario_of = readScenarios (dataset);
-  std::map<std::string, mid::evaluation::ScoreSummary> scenarios;
   std::size_t missing = 0;
-  std::vector<fs::path> scenes;
-  for (const auto& entry : fs::directory_iterator (dataset))
-    if (entry.is_directory() && fs::exists (entry.path() / "scene_gt.json"))
-      scenes.push_back (entry.path());
-  std::sort (scenes.begin(), scenes.end());
-  if (scenes.empty()) {
-    print_error ("'%s' holds no BOP scene folder (with scene_gt.json).\n", argv[1]);
-    return 1;
-  }
   for (const auto& scene_path : scenes) {
     mid::evaluation::GroundTruthScene truth;
     if (!mid::evaluation::loadBopScene (scene_path.string(), truth))
-      return 1;
+      return false;
     const std::string scene = scene_path.filename().string();
     const auto named = scenario_of.find (scene);
     auto& summary = scenarios[named != scenario_of.end() ? named->second : scene];
@@ -133,7 +116,7 @@ main (int argc, char** argv)
       if (!fs::exists (result_path))
         ++missing;
       else if (!mid::evaluation::readDetectionResult (result_path.string(), result))
-        return 1;
+        return false;
       const auto score = mid::evaluation::scoreFrame (frame, result, min_inside);
       if (per_frame)
         std::printf ("%s/%06d: %zu objects, instances TP %d FP %d FN %d\n",
@@ -146,11 +129,108 @@ main (int argc, char** argv)
       summary.add (score, result);
     }
   }
-  const std::string report = mid::evaluation::formatReport (scenarios);
-  std::printf ("%s", report.c_str());
   if (missing > 0)
-    print_info ("%zu frames had no result file and were scored as empty results.\n",
-                missing);
+    print_info ("%zu frames had no result file in '%s' and were scored as empty "
+                "results.\n",
+                missing,
+                results.string().c_str());
+  return true;
+}
+
+/** The comma-separated names of -names, or the results folders' own names without it. */
+std::vector<std::string>
+methodNames (const std::string& list, const std::vector<fs::path>& results)
+{
+  std::vector<std::string> names;
+  std::stringstream stream (list);
+  for (std::string name; std::getline (stream, name, ',');)
+    names.push_back (name);
+  if (list.empty())
+    for (const auto& folder : results) {
+      const fs::path normal = fs::absolute (folder).lexically_normal();
+      names.push_back (normal.has_filename()
+                           ? normal.filename().string()
+                           : normal.parent_path().filename().string());
+    }
+  return names;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  if (argc < 3 || pcl::console::find_switch (argc, argv, "-h")) {
+    printHelp (argv[0]);
+    return argc < 3 && !pcl::console::find_switch (argc, argv, "-h") ? 1 : 0;
+  }
+  const fs::path dataset (argv[1]);
+  std::vector<fs::path> results;
+  for (int i = 2; i < argc && argv[i][0] != '-'; ++i)
+    results.emplace_back (argv[i]);
+  std::string report_path, names_list;
+  double min_inside = 0.9;
+  pcl::console::parse_argument (argc, argv, "-report", report_path);
+  pcl::console::parse_argument (argc, argv, "-min_inside", min_inside);
+  pcl::console::parse_argument (argc, argv, "-names", names_list);
+  const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
+  if (!(min_inside > 0.0 && min_inside <= 1.0)) {
+    print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n",
+                 min_inside);
+    return 1;
+  }
+  if (results.empty()) {
+    print_error ("No RESULTS_DIR given.\n");
+    return 1;
+  }
+  results.insert (results.begin(), dataset);
+  for (const auto& folder : results)
+    if (!fs::is_directory (folder)) {
+      print_error ("'%s' is not a folder.\n", folder.string().c_str());
+      return 1;
+    }
+  results.erase (results.begin());
+  const std::vector<std::string> names = methodNames (names_list, results);
+  if (names.size() != results.size()) {
+    print_error (
+        "-names gives %zu names for %zu RESULTS_DIRs.\n", names.size(), results.size());
+    return 1;
+  }
+  mid::io::StagedFiles outputs;
+  const std::string report_temporary =
+      report_path.empty() ? std::string() : outputs.stage (report_path);
+  if (!report_path.empty() && report_temporary.empty())
+    return 1;
+  const auto scenario_of = readScenarios (dataset);
+  std::vector<fs::path> scenes;
+  for (const auto& entry : fs::directory_iterator (dataset))
+    if (entry.is_directory() && fs::exists (entry.path() / "scene_gt.json"))
+      scenes.push_back (entry.path());
+  std::sort (scenes.begin(), scenes.end());
+  if (scenes.empty()) {
+    print_error ("'%s' holds no BOP scene folder (with scene_gt.json).\n", argv[1]);
+    return 1;
+  }
+  std::vector<mid::evaluation::MethodScores> methods;
+  for (std::size_t m = 0; m < results.size(); ++m) {
+    mid::evaluation::MethodScores method;
+    method.name = names[m];
+    if (!scoreMethod (
+            scenes, scenario_of, results[m], min_inside, per_frame, method.scenarios))
+      return 1;
+    methods.push_back (method);
+  }
+  std::string report;
+  for (const auto& method : methods) {
+    if (methods.size() > 1)
+      report += "\n" + method.name + ":\n\n";
+    report += mid::evaluation::formatReport (method.scenarios);
+  }
+  if (methods.size() > 1)
+    report += "\nSide by side (time ratio: " + methods.front().name +
+              "'s median grouping time / the method's):\n\n" +
+              mid::evaluation::formatComparison (methods);
+  std::printf ("%s", report.c_str());
   if (!report_path.empty()) {
     std::ofstream file (report_temporary);
     file << report;

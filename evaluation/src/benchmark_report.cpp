@@ -44,6 +44,51 @@ row (const std::string& name, const ScoreSummary& s)
   return line;
 }
 
+/** The scenarios of a method plus its "total" (all scenarios summed), by name. */
+std::map<std::string, ScoreSummary>
+withTotal (const std::map<std::string, ScoreSummary>& scenarios)
+{
+  std::map<std::string, ScoreSummary> all = scenarios;
+  ScoreSummary total;
+  for (const auto& [name, summary] : scenarios)
+    total.add (summary);
+  all["total"] = total;
+  return all;
+}
+
+std::string
+comparisonRow (const std::string& scenario,
+               const std::string& method,
+               const ScoreSummary& s,
+               double reference_ms)
+{
+  const double ip = ScoreSummary::precision (s.instance_tp, s.instance_fp);
+  const double ir = ScoreSummary::recall (s.instance_tp, s.instance_fn);
+  const double pp = ScoreSummary::precision (s.pair_tp, s.pair_fp);
+  const double pr = ScoreSummary::recall (s.pair_tp, s.pair_fn);
+  const double grouping = median (s.grouping_times_ms);
+  char line[360];
+  std::snprintf (
+      line,
+      sizeof (line),
+      "| %-10s | %-10s | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %6.2f "
+      "| %6.2f | %7.2f | %5.2f |\n",
+      scenario.c_str(),
+      method.c_str(),
+      ip,
+      ir,
+      ScoreSummary::f1 (ip, ir),
+      pp,
+      pr,
+      ScoreSummary::f1 (pp, pr),
+      median (s.rotation_errors_deg),
+      median (s.translation_errors_mm),
+      grouping,
+      grouping > 0.0 ? reference_ms / grouping
+                     : std::numeric_limits<double>::quiet_NaN());
+  return line;
+}
+
 } // namespace
 
 void
@@ -65,6 +110,8 @@ ScoreSummary::add (const FrameScore& score, const DetectionResult& result)
     times_ms.push_back (result.total_ms);
   if (result.features_ms >= 0.0)
     feature_times_ms.push_back (result.features_ms);
+  if (result.grouping_ms >= 0.0)
+    grouping_times_ms.push_back (result.grouping_ms);
 }
 
 void
@@ -82,6 +129,7 @@ ScoreSummary::add (const ScoreSummary& other)
   append (translation_errors_mm, other.translation_errors_mm);
   append (times_ms, other.times_ms);
   append (feature_times_ms, other.feature_times_ms);
+  append (grouping_times_ms, other.grouping_times_ms);
 }
 
 double
@@ -109,6 +157,39 @@ formatReport (const std::map<std::string, ScoreSummary>& scenarios)
     total.add (summary);
   }
   report += row ("total", total);
+  return report;
+}
+
+std::string
+formatComparison (const std::vector<MethodScores>& methods)
+{
+  std::string report =
+      "| scenario   | method     | instances P | R | F1 | pairs P | R | F1 | rot. err. "
+      "deg "
+      "(median) | transl. err. mm (median) | grouping ms (median) | time ratio |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  if (methods.empty())
+    return report;
+  std::vector<std::map<std::string, ScoreSummary>> all;
+  for (const auto& method : methods)
+    all.push_back (withTotal (method.scenarios));
+  std::vector<std::string> scenarios;
+  for (const auto& [name, summary] : all.front())
+    if (name != "total")
+      scenarios.push_back (name);
+  scenarios.emplace_back ("total");
+  for (const auto& scenario : scenarios) {
+    const auto reference = all.front().find (scenario);
+    const double reference_ms = reference != all.front().end()
+                                    ? median (reference->second.grouping_times_ms)
+                                    : std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const auto found = all[m].find (scenario);
+      if (found != all[m].end())
+        report +=
+            comparisonRow (scenario, methods[m].name, found->second, reference_ms);
+    }
+  }
   return report;
 }
 

@@ -30,6 +30,9 @@ readDetectionResult (const std::string& path, DetectionResult& result)
     const auto& timing = document.at ("timing_ms");
     result.total_ms = timing.value ("total", -1.0);
     result.features_ms = timing.value ("features", -1.0);
+    if (timing.contains ("triplets") && timing.contains ("clustering"))
+      result.grouping_ms =
+          timing.at ("triplets").get<double>() + timing.at ("clustering").get<double>();
     for (const auto& object : document.at ("objects")) {
       DetectedObject detected;
       for (const auto& instance : object.at ("instances")) {

@@ -26,6 +26,22 @@ const char* kPerfect =
     {"pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[10, 10], [20, 20]]},
     {"pose": [[1, 0, 0, 0.2], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[210, 10], [220, 20]]}]}]})";
 
+/** kPerfect with a grouping stage of 10 + 2 ms. */
+const char* kPerfectTimed =
+    R"({"format": "mid-discovery-result", "version": 1,
+  "timing_ms": {"features": 50, "triplets": 10, "clustering": 2, "total": 80},
+  "objects": [{"instances": [
+    {"pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[10, 10], [20, 20]]},
+    {"pose": [[1, 0, 0, 0.2], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[210, 10], [220, 20]]}]}]})";
+
+/** A peer that finds one instance on the annotated box and one in between, in 0 + 3 ms. */
+const char* kHalfTimed =
+    R"({"format": "mid-discovery-result", "version": 1,
+  "timing_ms": {"features": 50, "triplets": 0, "clustering": 3, "total": 71},
+  "objects": [{"instances": [
+    {"pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[10, 10], [20, 20]]},
+    {"pose": [[1, 0, 0, 0.1], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[150, 10], [160, 20]]}]}]})";
+
 } // namespace
 
 TEST (EvalApp, ScoresAPerfectAndAMissingResult)
@@ -68,4 +84,40 @@ TEST (EvalApp, RefusesUnusableFolders)
   EXPECT_NE (empty.exit_code, 0);
   EXPECT_NE (empty.output.find ("no BOP scene folder"), std::string::npos)
       << empty.output;
+}
+
+TEST (EvalApp, PutsMethodsSideBySide)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto dataset = folder.path() / "dataset";
+  std::filesystem::create_directories (dataset / "000000");
+  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
+  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
+  for (const char* method : {"ours", "peer"}) {
+    std::filesystem::create_directories (folder.path() / method / "000000");
+    for (const char* image : {"000000.json", "000001.json"})
+      std::ofstream (folder.path() / method / "000000" / image)
+          << (method[0] == 'o' ? kPerfectTimed : kHalfTimed);
+  }
+  const std::string command = std::string (MID_EVAL_APP) + " " + dataset.string() +
+                              " " + folder.file ("ours") + " " + folder.file ("peer");
+  const auto run = mid::test::runCommand (command + " -names triplets,gcg");
+  ASSERT_EQ (run.exit_code, 0) << run.output;
+  // Ours: 4 TP. The peer: per frame 1 TP, 1 FP (no annotated box holds 90 % of its
+  // keypoints), 1 FN -> P 0.5, R 0.5; pairs: no valid object with two TP -> 0 TP, 1 FP, 1 FN.
+  // Grouping time 12 ms against 3 ms: ratio 4.
+  EXPECT_NE (
+      run.output.find ("| 000000     | triplets   | 1.000 | 1.000 | 1.000 | 1.000 | "
+                       "1.000 | 1.000 |   0.00 |   0.00 |   12.00 |  1.00 |"),
+      std::string::npos)
+      << run.output;
+  EXPECT_NE (
+      run.output.find ("| 000000     | gcg        | 0.500 | 0.500 | 0.500 | 0.000 | "
+                       "0.000 | 0.000 |    nan |    nan |    3.00 |  4.00 |"),
+      std::string::npos)
+      << run.output;
+  const auto wrong_names = mid::test::runCommand (command + " -names one");
+  EXPECT_NE (wrong_names.exit_code, 0);
+  EXPECT_NE (wrong_names.output.find ("-names gives 1 names for 2"), std::string::npos)
+      << wrong_names.output;
 }

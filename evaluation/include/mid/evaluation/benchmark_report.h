@@ -33,7 +33,7 @@ struct ScoreSummary
     * result gives them (DetectionResult::total_ms, DetectionResult::features_ms).
     */
   ///@{
-  std::vector<double> times_ms, feature_times_ms;
+  std::vector<double> times_ms, feature_times_ms, grouping_times_ms;
   ///@}
 
   /** \brief Add one frame; its pair counts only if it holds only pairs.
@@ -86,6 +86,25 @@ median (std::vector<double> values);
   */
 std::string
 formatReport (const std::map<std::string, ScoreSummary>& scenarios);
+
+/** \brief One method's scores per scenario, with the method's name (see formatComparison()). */
+struct MethodScores
+{
+  std::string name;
+  std::map<std::string, ScoreSummary> scenarios;
+};
+
+/** \brief Methods side by side on the same frames: per scenario (and in total) one line per
+  * method with precision, recall and F1 on instances and pairs, the median relative pose
+  * error, the median time of the grouping stage (triplets + clustering, or the peer's
+  * correspondence grouping) and the ratio of the first method's median grouping time to this
+  * method's (below 1: the first method is faster).
+  * \param[in] methods the methods, the first one being the reference of the time ratio; a
+  * scenario missing from a method is left out for that method
+  * \return a Markdown table
+  */
+std::string
+formatComparison (const std::vector<MethodScores>& methods);
 
 } // namespace evaluation
 } // namespace mid

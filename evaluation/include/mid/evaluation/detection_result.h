@@ -36,6 +36,10 @@ struct DetectionResult
   double total_ms = -1.0;
   /** \brief timing_ms.features, or -1 if absent. */
   double features_ms = -1.0;
+  /** \brief timing_ms.triplets + timing_ms.clustering: the grouping stage that PCL's
+    * correspondence grouping replaces in a peer run, or -1 if either is absent.
+    */
+  double grouping_ms = -1.0;
 };
 
 /** \brief Read a result JSON written by pcl_multi_instance_discovery or _detect.
