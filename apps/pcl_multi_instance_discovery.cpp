@@ -72,6 +72,9 @@ printHelp (const char* program)
         "Lowe ratio test, 1 = off",
         static_cast<double> (d.max_distance_ratio));
   print_info ("  -mutual             keep only mutual best matches\n");
+  line ("-knn K",
+        "matches per keypoint: its K most similar keypoints",
+        d.matches_per_keypoint);
   line ("-ppf_dist D",
         "point pair feature distance threshold, metres",
         static_cast<double> (d.ppf_distance));
@@ -142,6 +145,7 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-min_kp_dist", p.min_keypoint_distance);
   parse_argument (argc, argv, "-ratio", p.max_distance_ratio);
   p.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
+  parse_argument (argc, argv, "-knn", p.matches_per_keypoint);
   p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
   parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
   float degrees = 0.0f;

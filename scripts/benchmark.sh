@@ -13,6 +13,11 @@
 #   MID_BENCHMARK_SEED          seed of the dataset (1)
 #   MID_BENCHMARK_SUPERSAMPLING colour rays per pixel along each axis (3)
 #   MID_JOBS                    discovery runs in parallel, and build jobs (2)
+#   MID_BENCHMARK_METHODS       space-separated groupings to run on the same frames (triplets):
+#                               triplets (ours), gcg (pcl::GeometricConsistencyGrouping),
+#                               hough (pcl::Hough3DGrouping); with more than one, the report
+#                               also puts them side by side (scripts/compare_peers.sh)
+#   MID_BENCHMARK_KEEP_DATASET  1: reuse OUT/dataset when it exists (0)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,6 +28,20 @@ SCENARIOS=${MID_BENCHMARK_SCENARIOS:-S-ez,S-d,M-ez,M-d,rows,none}
 SEED=${MID_BENCHMARK_SEED:-1}
 SUPERSAMPLING=${MID_BENCHMARK_SUPERSAMPLING:-3}
 JOBS=${MID_JOBS:-2}
+METHODS=${MID_BENCHMARK_METHODS:-triplets}
+KEEP_DATASET=${MID_BENCHMARK_KEEP_DATASET:-0}
+
+# Each method's options. The peers' parameters were tuned on development frames (seed 2, five
+# per scenario, never the scored seed) by a grid search on instance F1 (doc/benchmark.md).
+method_options() {
+  case $1 in
+    triplets) echo "" ;;
+    gcg) echo "-grouping gcg -gc_size 0.005 -gc_threshold 8" ;;
+    hough) echo "-grouping hough -hough_bin 0.04 -hough_threshold 3" ;;
+    *) echo "unknown method '$1' (triplets, gcg or hough)" >&2; return 1 ;;
+  esac
+}
+for method in $METHODS; do method_options "$method" >/dev/null; done
 APPS=$BUILD_DIR/apps
 TARGETS=(pcl_multi_instance_bench_synth pcl_multi_instance_discovery pcl_multi_instance_eval)
 
@@ -36,38 +55,54 @@ for target in "${TARGETS[@]}"; do
 done
 
 start=$(date +%s)
-rm -rf "$OUT/dataset" "$OUT/results" "$OUT/report.md"
+rm -rf "$OUT/results" "$OUT/report.md"
 mkdir -p "$OUT/results"
 
-echo "=== dataset: $SCENARIOS, $FRAMES frames each, seed $SEED"
-"$APPS/pcl_multi_instance_bench_synth" -texture_dir data/textures -out_dir "$OUT/dataset" \
-  -frames "$FRAMES" -seed "$SEED" -scenarios "$SCENARIOS" -supersampling "$SUPERSAMPLING"
+if [ "$KEEP_DATASET" = 1 ] && [ -d "$OUT/dataset" ]; then
+  echo "=== dataset: reusing $OUT/dataset"
+else
+  rm -rf "$OUT/dataset"
+  echo "=== dataset: $SCENARIOS, $FRAMES frames each, seed $SEED"
+  "$APPS/pcl_multi_instance_bench_synth" -texture_dir data/textures -out_dir "$OUT/dataset" \
+    -frames "$FRAMES" -seed "$SEED" -scenarios "$SCENARIOS" -supersampling "$SUPERSAMPLING"
+fi
 generated=$(date +%s)
 
-# One frame: OUT/dataset/<scene>/pcd/<image>.pcd -> OUT/results/<scene>/<image>.json (+ .log).
+# One frame: OUT/dataset/<scene>/pcd/<image>.pcd -> RESULTS/<scene>/<image>.json (+ .log).
 run_discovery() {
   local pcd=$1 scene image
   scene=$(basename "$(dirname "$(dirname "$pcd")")")
   image=$(basename "$pcd" .pcd)
-  mkdir -p "$OUT/results/$scene"
-  if ! "$APPS/pcl_multi_instance_discovery" "$pcd" -json "$OUT/results/$scene/$image.json" \
-       > "$OUT/results/$scene/$image.log" 2>&1; then
+  mkdir -p "$RESULTS/$scene"
+  # shellcheck disable=SC2086 # OPTIONS holds several options
+  if ! "$APPS/pcl_multi_instance_discovery" "$pcd" -json "$RESULTS/$scene/$image.json" \
+       $OPTIONS > "$RESULTS/$scene/$image.log" 2>&1; then
     echo "discovery failed on $pcd:" >&2
-    cat "$OUT/results/$scene/$image.log" >&2
+    cat "$RESULTS/$scene/$image.log" >&2
     return 1
   fi
 }
 export -f run_discovery
-export OUT APPS
+export APPS
 
 count=$(find "$OUT/dataset" -path '*/pcd/*.pcd' | wc -l)
-echo "=== discovery on $count frames ($JOBS at a time)"
-find "$OUT/dataset" -path '*/pcd/*.pcd' -print0 | sort -z |
-  xargs -0 -n 1 -P "$JOBS" bash -c 'run_discovery "$1"' _
+folders=()
+for method in $METHODS; do
+  OPTIONS=$(method_options "$method")
+  RESULTS=$OUT/results/$method
+  [ "$METHODS" = triplets ] && RESULTS=$OUT/results
+  export OPTIONS RESULTS
+  folders+=("$RESULTS")
+  echo "=== discovery ($method${OPTIONS:+: $OPTIONS}) on $count frames ($JOBS at a time)"
+  find "$OUT/dataset" -path '*/pcd/*.pcd' -print0 | sort -z |
+    xargs -0 -n 1 -P "$JOBS" bash -c 'run_discovery "$1"' _
+done
 discovered=$(date +%s)
 
 echo "=== evaluation"
-"$APPS/pcl_multi_instance_eval" "$OUT/dataset" "$OUT/results" -report "$OUT/report.md"
+names=$(echo $METHODS | tr ' ' ',')
+"$APPS/pcl_multi_instance_eval" "$OUT/dataset" "${folders[@]}" -names "$names" \
+  -report "$OUT/report.md"
 end=$(date +%s)
 echo "=== $count frames in $((end - start)) s (dataset $((generated - start)) s," \
      "discovery $((discovered - generated)) s, evaluation $((end - discovered)) s);" \

@@ -56,6 +56,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "max_distance_ratio",
              static_cast<double> (p.max_distance_ratio),
              "in (0, 1]");
+  c.require (p.matches_per_keypoint >= 1,
+             "matches_per_keypoint",
+             static_cast<double> (p.matches_per_keypoint),
+             ">= 1");
   c.require (p.ppf_distance >= 0.0f,
              "ppf_distance",
              static_cast<double> (p.ppf_distance),

@@ -209,6 +209,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   matcher.setMaxDescriptorDistance (p.max_descriptor_distance);
   matcher.setMinKeypointDistance (p.min_keypoint_distance);
   matcher.setMaxDistanceRatio (p.max_distance_ratio);
+  matcher.setMaxMatchesPerKeypoint (p.matches_per_keypoint);
   matcher.setMutualCheck (p.mutual_check);
   if (!matcher.match (result.matches))
     return false;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace {
@@ -132,6 +133,33 @@ TEST (SelfMatcher, RatioTestAndMutualCheck)
   EXPECT_EQ (matchOf (mutual, 0), 1);
   EXPECT_EQ (matchOf (mutual, 1), 0);
   EXPECT_EQ (matchOf (mutual, 2), -1);
+}
+
+TEST (SelfMatcher, KeepsTheKMostSimilarKeypointsEachPairOnce)
+{
+  // Three copies of a feature (0, 1, 2) and a fourth keypoint that matches nothing.
+  Fixture f;
+  const auto a = f.randomDescriptor();
+  f.add (a);                         // 0
+  f.add (Fixture::moved (a, 20));    // 1: best of 0
+  f.add (Fixture::moved (a, 30, 1)); // 2: 30 from 0, 36 from 1
+  f.add (f.randomDescriptor());      // 3
+  mid::SelfMatcher matcher;
+  matcher.setMaxDescriptorDistance (100.0f);
+  EXPECT_EQ (f.match (matcher).size(),
+             3u); // 0->1, 1->0, 2->1: pair (0, 2) never matched
+  matcher.setMaxMatchesPerKeypoint (2);
+  const auto matches = f.match (matcher);
+  // The three best matches first, then 1->2 (1's second), the only pair still missing; 0's
+  // and 2's second candidates form pairs already matched.
+  ASSERT_EQ (matches.size(), 4u);
+  EXPECT_EQ (matches[3].index_query, 1);
+  EXPECT_EQ (matches[3].index_match, 2);
+  EXPECT_NEAR (matches[3].distance, std::sqrt (20.0f * 20.0f + 30.0f * 30.0f), 1e-3f);
+  matcher.setMaxMatchesPerKeypoint (0);
+  pcl::Correspondences refused{pcl::Correspondence (0, 1, 0.0f)};
+  EXPECT_FALSE (matcher.match (refused));
+  EXPECT_TRUE (refused.empty());
 }
 
 TEST (SelfMatcher, RefusesBadInputWithClearedOutput)

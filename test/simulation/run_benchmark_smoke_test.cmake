@@ -1,21 +1,24 @@
 # Runs scripts/benchmark.sh on two tiny frames (one S-ez, one M-d; one colour ray per pixel):
-# dataset generation, discovery on every frame and the evaluation report, end to end.
+# dataset generation, discovery on every frame with ours and both PCL peers, and the
+# evaluation report with the side-by-side table, end to end.
 # Variables: SCRIPT (scripts/benchmark.sh), BUILD_DIR (holding apps/), WORK_DIR (emptied first).
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -E env MID_BUILD_DIR=${BUILD_DIR}
                         MID_BENCHMARK_OUT=${WORK_DIR} MID_BENCHMARK_FRAMES=1
                         MID_BENCHMARK_SCENARIOS=S-ez,M-d MID_BENCHMARK_SUPERSAMPLING=1
-                        MID_JOBS=1 bash ${SCRIPT}
+                        MID_JOBS=1 "MID_BENCHMARK_METHODS=triplets gcg hough" bash ${SCRIPT}
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "benchmark.sh failed (${result}):\n${output}\n${error}")
 endif()
-foreach(row "\\| S-ez +\\| +1 \\|" "\\| M-d +\\| +1 \\|" "\\| total +\\| +2 \\|")
+foreach(row "\\| S-ez +\\| +1 \\|" "\\| M-d +\\| +1 \\|" "\\| total +\\| +2 \\|"
+           "\\| total +\\| triplets +\\|" "\\| total +\\| gcg +\\|" "\\| total +\\| hough +\\|")
   if(NOT output MATCHES "${row}")
     message(FATAL_ERROR "the report lacks a row matching '${row}':\n${output}")
   endif()
 endforeach()
-foreach(name report.md results/000000/000000.json results/000001/000000.json)
+foreach(name report.md results/triplets/000000/000000.json results/gcg/000001/000000.json
+             results/hough/000001/000000.json)
   if(NOT EXISTS ${WORK_DIR}/${name})
     message(FATAL_ERROR "${name} was not written:\n${output}")
   endif()

@@ -47,6 +47,10 @@ struct DiscoveryParameters
   float max_distance_ratio = 1.0f;
   /** \brief Keep only mutual best matches. */
   bool mutual_check = false;
+  /** \brief Matches per keypoint: its k most similar other keypoints (>= 1; 1 is the paper's
+    * choice; see SelfMatcher::setMaxMatchesPerKeypoint()).
+    */
+  int matches_per_keypoint = 1;
 
   // --- Triplets (CorrespondenceRejectorPPFTriplet) ---
   /** \brief Point pair feature thresholds: distance difference 5 mm (>= 0) and angle difference

@@ -128,7 +128,28 @@ public:
   }
   ///@}
 
-  /** \brief Match every keypoint to its most similar other keypoint.
+  /** \brief Matches kept per keypoint: its k most similar other keypoints (each within the
+    * descriptor distance; the ratio test and the mutual check apply to the most similar one,
+    * which decides whether the keypoint is matched at all). The most similar ones come
+    * first, as with k = 1; then the further ones whose pair is not matched yet, each pair once.
+    * Default 1, the paper's "most similar keypoint"; with n copies in view, a
+    * keypoint has n - 1 true partners, and k > 1 gives each pair of copies more matches (not
+    * in the paper). Must be >= 1 (match() fails otherwise).
+    */
+  ///@{
+  void
+  setMaxMatchesPerKeypoint (int k)
+  {
+    max_matches_per_keypoint_ = k;
+  }
+  int
+  getMaxMatchesPerKeypoint () const
+  {
+    return max_matches_per_keypoint_;
+  }
+  ///@}
+
+  /** \brief Match every keypoint to its most similar other keypoint(s).
     * \param[out] matches the kept matches (see the class description)
     * \return false (matches cleared, PCL_ERROR printed) if an input is missing, the two inputs
     * differ in size, or a parameter is out of range; true otherwise
@@ -143,6 +164,7 @@ private:
   float min_keypoint_distance_ = 0.01f;
   float max_distance_ratio_ = 1.0f;
   bool mutual_check_ = false;
+  int max_matches_per_keypoint_ = 1;
 };
 
 } // namespace mid
