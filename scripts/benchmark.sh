@@ -37,7 +37,7 @@ method_options() {
   case $1 in
     triplets) echo "" ;;
     gcg) echo "-grouping gcg -gc_size 0.005 -gc_threshold 8" ;;
-    hough) echo "-grouping hough -hough_bin 0.04 -hough_threshold 3" ;;
+    hough) echo "-grouping hough -hough_bin 0.02 -hough_threshold 3 -lrf_radius 0.08" ;;
     *) echo "unknown method '$1' (triplets, gcg or hough)" >&2; return 1 ;;
   esac
 }
