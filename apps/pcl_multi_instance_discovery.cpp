@@ -113,6 +113,9 @@ printHelp (const char* program)
   print_info ("                      behaviour; by default such models are merged and "
               "such\n");
   print_info ("                      instances removed)\n");
+  print_info ("  -keep_rows          do not split a cluster that links a row of copies "
+              "(the\n");
+  print_info ("                      paper's behaviour)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
   print_info ("  -grouping G         triplets (ours, default), gcg "
@@ -147,6 +150,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
   parse_argument (argc, argv, "-knn", p.matches_per_keypoint);
   p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
+  p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
   parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
   float degrees = 0.0f;
   if (parse_argument (argc, argv, "-ppf_angle", degrees) >= 0)

@@ -176,6 +176,7 @@ groupWithTriplets (const DiscoveryParameters& p,
   clustering.setInputTriplets (triplets);
   clustering.setClusterDistance (p.cluster_distance);
   clustering.setMinClusterSize (p.min_cluster_size);
+  clustering.setSplitChains (p.split_chains);
   std::vector<pcl::Correspondences> groups;
   if (!triplets->empty())
     clustering.cluster (groups);

@@ -82,6 +82,10 @@ struct DiscoveryParameters
   float cluster_distance = 0.035f;
   /** \brief DBSCAN min samples, the smallest cluster: 14 (>= 1). */
   std::size_t min_cluster_size = 14;
+  /** \brief Split clusters that link a regular row of copies into neighbour pairs (not in the
+    * paper, which lists rows as a limitation; see TransformationSpaceClustering::setSplitChains()).
+    */
+  bool split_chains = true;
 
   // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
   /** \brief The grouping method. */
