@@ -90,7 +90,9 @@ formatReport (const std::map<std::string, ScoreSummary>& scenarios);
 /** \brief One method's scores per scenario, with the method's name (see formatComparison()). */
 struct MethodScores
 {
+  /** \brief The method's name in the table (e.g. "triplets", "gcg"). */
   std::string name;
+  /** \brief The method's summary per scenario, by scenario name. */
   std::map<std::string, ScoreSummary> scenarios;
 };
 
