@@ -183,6 +183,19 @@ main (int argc, char** argv)
     print_error ("No RESULTS_DIR given.\n");
     return 1;
   }
+  // Every folder comes before the options: a word after them that is not an option's value
+  // would silently be ignored.
+  for (int i = 2 + static_cast<int> (results.size()); i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "-report" || word == "-min_inside" || word == "-names")
+      ++i;
+    else if (word != "-frames") {
+      print_error (
+          "Unexpected argument '%s' (results folders come before the options).\n",
+          argv[i]);
+      return 1;
+    }
+  }
   results.insert (results.begin(), dataset);
   for (const auto& folder : results)
     if (!fs::is_directory (folder)) {

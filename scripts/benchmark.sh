@@ -31,16 +31,8 @@ JOBS=${MID_JOBS:-2}
 METHODS=${MID_BENCHMARK_METHODS:-triplets}
 KEEP_DATASET=${MID_BENCHMARK_KEEP_DATASET:-0}
 
-# Each method's options. The peers' parameters were tuned on development frames (seed 2, five
-# per scenario, never the scored seed) by a grid search on instance F1 (doc/benchmark.md).
-method_options() {
-  case $1 in
-    triplets) echo "" ;;
-    gcg) echo "-grouping gcg -gc_size 0.005 -gc_threshold 8" ;;
-    hough) echo "-grouping hough -hough_bin 0.02 -hough_threshold 3 -lrf_radius 0.08" ;;
-    *) echo "unknown method '$1' (triplets, gcg or hough)" >&2; return 1 ;;
-  esac
-}
+# shellcheck source=scripts/benchmark_methods.sh
+. scripts/benchmark_methods.sh
 for method in $METHODS; do method_options "$method" >/dev/null; done
 APPS=$BUILD_DIR/apps
 TARGETS=(pcl_multi_instance_bench_synth pcl_multi_instance_discovery pcl_multi_instance_eval)
@@ -90,7 +82,7 @@ folders=()
 for method in $METHODS; do
   OPTIONS=$(method_options "$method")
   RESULTS=$OUT/results/$method
-  [ "$METHODS" = triplets ] && RESULTS=$OUT/results
+  [ "$(echo $METHODS)" = triplets ] && RESULTS=$OUT/results
   export OPTIONS RESULTS
   folders+=("$RESULTS")
   echo "=== discovery ($method${OPTIONS:+: $OPTIONS}) on $count frames ($JOBS at a time)"

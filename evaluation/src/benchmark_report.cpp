@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <set>
 
 namespace mid {
 namespace evaluation {
@@ -171,12 +172,15 @@ formatComparison (const std::vector<MethodScores>& methods)
   if (methods.empty())
     return report;
   std::vector<std::map<std::string, ScoreSummary>> all;
-  for (const auto& method : methods)
+  all.reserve (methods.size());
+  std::set<std::string> names;
+  for (const auto& method : methods) {
     all.push_back (withTotal (method.scenarios));
-  std::vector<std::string> scenarios;
-  for (const auto& [name, summary] : all.front())
-    if (name != "total")
-      scenarios.push_back (name);
+    for (const auto& [name, summary] : method.scenarios)
+      names.insert (name);
+  }
+  names.erase ("total");
+  std::vector<std::string> scenarios (names.begin(), names.end());
   scenarios.emplace_back ("total");
   for (const auto& scenario : scenarios) {
     const auto reference = all.front().find (scenario);

@@ -4,6 +4,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <utility>
@@ -87,8 +88,10 @@ findNearest (const KeypointCloud& keypoints,
           keypoints[static_cast<std::size_t> (i)].getVector3fMap();
       Nearest& nearest = result[static_cast<std::size_t> (i)];
       for (int j = 0; j < n; ++j) {
-        if (j == i || (keypoints[static_cast<std::size_t> (j)].getVector3fMap() - query)
-                              .squaredNorm() < min_squared)
+        // A NaN distance (a NaN descriptor) is never a candidate.
+        if (j == i || std::isnan (row[j]) ||
+            (keypoints[static_cast<std::size_t> (j)].getVector3fMap() - query)
+                    .squaredNorm() < min_squared)
           continue;
         nearest.offer (row[j], j, capacity);
       }

@@ -78,6 +78,7 @@ sameLandmarks (const ObjectModel& into, const ObjectModel& from)
         same.emplace (instance.landmarks[o], found->second);
     }
   std::vector<std::pair<int, int>> pairs;
+  pairs.reserve (same.size());
   for (const auto& [l_from, l_into] : same)
     pairs.emplace_back (l_into, l_from);
   return pairs;

@@ -77,7 +77,8 @@ mergeModel (ObjectModel& into,
   if (landmark_map) {
     landmark_map->assign (from.landmarks.size(), -1);
     for (const auto& [l_from, l_into] : landmark_of)
-      (*landmark_map)[static_cast<std::size_t> (l_from)] = l_into;
+      if (l_from >= 0 && static_cast<std::size_t> (l_from) < from.landmarks.size())
+        (*landmark_map)[static_cast<std::size_t> (l_from)] = l_into;
   }
 }
 

@@ -9,6 +9,7 @@
 #include <pcl/point_types.h>
 #include <pcl/register_point_struct.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -154,10 +155,18 @@ loadObjectModel (const std::string& path, ObjectModel& model)
   if (!io::readCheckedPCD (
           data_path, blob, rows.sensor_origin_, rows.sensor_orientation_, problem))
     return fail ("cannot read the model data: " + problem, model);
-  if (pcl::getFieldIndex (blob, "landmark") < 0 ||
-      pcl::getFieldIndex (blob, "descriptor") < 0)
+  const auto hasField =
+      [&blob] (const char* name, std::uint8_t datatype, std::uint32_t count) {
+        const int index = pcl::getFieldIndex (blob, name);
+        return index >= 0 &&
+               blob.fields[static_cast<std::size_t> (index)].datatype == datatype &&
+               blob.fields[static_cast<std::size_t> (index)].count == count;
+      };
+  if (!hasField ("landmark", pcl::PCLPointField::INT32, 1) ||
+      !hasField ("descriptor", pcl::PCLPointField::FLOAT32, 128))
     return fail ("'" + data_path +
-                     "' is not model data (no landmark or descriptor field)",
+                     "' is not model data (it needs an int landmark and 128 float "
+                     "descriptor values per row)",
                  model);
   try {
     pcl::fromPCLPointCloud2 (blob, rows);

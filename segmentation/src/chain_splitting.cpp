@@ -4,12 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numeric>
 
 namespace mid {
 
 namespace {
+
+/** Sources spanning more than this many steps along the row lie on more than one copy (one
+  * copy spans less than a step; the margin absorbs keypoint noise).
+  */
+constexpr double kMinChainSpan = 1.05;
 
 /** The phase in [0, 1) at the middle of the largest empty interval of the phases, on the
   * circle.
@@ -28,28 +34,45 @@ cutOfLargestGap (std::vector<double> phases)
   return cut - std::floor (cut);
 }
 
+Eigen::Vector3f
+sourceCentroid (const TripletCluster& cluster, const KeypointCloud& keypoints)
+{
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (const auto k : cluster.source_indices)
+    centroid += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+  return centroid /
+         static_cast<float> (std::max<std::size_t> (1, cluster.source_indices.size()));
+}
+
 } // namespace
+
+Eigen::Vector3f
+chainStep (const TripletCluster& cluster, const KeypointCloud& keypoints)
+{
+  if (cluster.source_indices.empty())
+    return Eigen::Vector3f::Zero();
+  const Eigen::Vector3f centroid = sourceCentroid (cluster, keypoints);
+  return cluster.transformation.topLeftCorner<3, 3>() * centroid +
+         cluster.transformation.topRightCorner<3, 1>() - centroid;
+}
 
 std::vector<std::vector<std::size_t>>
 splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
-                   float max_rotation)
+                   float max_rotation,
+                   bool known_row)
 {
   std::vector<std::size_t> all (cluster.triplets.size());
   std::iota (all.begin(), all.end(), std::size_t{0});
-  const std::vector<std::vector<std::size_t>> whole{all};
+  std::vector<std::vector<std::size_t>> whole{all};
   const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3>();
   if (cluster.source_indices.empty() ||
       Eigen::AngleAxisf (rotation).angle() > max_rotation)
     return whole;
 
-  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-  for (const auto k : cluster.source_indices)
-    centroid += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
-  centroid /= static_cast<float> (cluster.source_indices.size());
-  const Eigen::Vector3f step =
-      rotation * centroid + cluster.transformation.topRightCorner<3, 1>() - centroid;
+  const Eigen::Vector3f centroid = sourceCentroid (cluster, keypoints);
+  const Eigen::Vector3f step = chainStep (cluster, keypoints);
   if (!(step.squaredNorm() > 0.0f))
     return whole;
   const auto chain = [&] (pcl::index_t k) {
@@ -58,6 +81,24 @@ splitChainCluster (const TripletCluster& cluster,
             .dot (step) /
         step.squaredNorm());
   };
+
+  // A chain shows itself by a keypoint that is a target (on copy k + 1) and a source (towards
+  // copy k + 2), or by sources that span more than one step along the row (copies cannot
+  // interpenetrate, so one copy spans less). A single pair of copies shows neither and is
+  // never split: the largest gap of its phases may fall inside the object.
+  std::vector<pcl::index_t> shared;
+  std::set_intersection (cluster.source_indices.begin(),
+                         cluster.source_indices.end(),
+                         cluster.target_indices.begin(),
+                         cluster.target_indices.end(),
+                         std::back_inserter (shared));
+  const auto [lowest, highest] = std::minmax_element (
+      cluster.source_indices.begin(),
+      cluster.source_indices.end(),
+      [&chain] (pcl::index_t a, pcl::index_t b) { return chain (a) < chain (b); });
+  if (!known_row && shared.empty() &&
+      chain (*highest) - chain (*lowest) <= kMinChainSpan)
+    return whole;
 
   std::vector<double> phases;
   for (const auto& indices : {cluster.source_indices, cluster.target_indices})
@@ -89,6 +130,7 @@ splitChainCluster (const TripletCluster& cluster,
   if (parts.size() < 2)
     return whole;
   std::vector<std::vector<std::size_t>> split;
+  split.reserve (parts.size());
   for (auto& [copy_number, members] : parts)
     split.push_back (std::move (members));
   return split;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <set>
 
@@ -75,25 +76,54 @@ estimateCluster (const TripletMatches& triplets,
   */
 constexpr float kMaxChainRotation = static_cast<float> (20.0 * M_PI / 180.0);
 
-/** Replace every cluster that links a row of copies by its parts (splitChainCluster()). */
+/** True if `step` is k times `row` for an integer k >= 2, within a quarter of the row's step. */
+bool
+isMultipleOf (const Eigen::Vector3f& step, const Eigen::Vector3f& row)
+{
+  const float length = row.norm();
+  if (!(length > 0.0f))
+    return false;
+  const float k = std::round (step.dot (row) / (length * length));
+  return k >= 2.0f && (step - k * row).norm() < 0.25f * length;
+}
+
+/** Replace every cluster that links a row of copies by its parts (splitChainCluster()): first
+  * the chains, then the clusters whose step is a multiple of a chain's step (copy k -> k + 2
+  * and further, which link groups of neighbouring copies and show no chain evidence).
+  */
 void
 splitChains (const TripletMatches& triplets,
              const KeypointCloud& keypoints,
              TripletClusters& clusters)
 {
+  std::vector<std::vector<std::vector<std::size_t>>> parts (clusters.size());
+  std::vector<Eigen::Vector3f> rows;
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    parts[c] = splitChainCluster (clusters[c], triplets, keypoints, kMaxChainRotation);
+    if (parts[c].size() > 1)
+      rows.push_back (chainStep (clusters[c], keypoints));
+  }
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    const Eigen::Vector3f step = chainStep (clusters[c], keypoints);
+    if (parts[c].size() < 2 &&
+        std::any_of (rows.begin(), rows.end(), [&step] (const Eigen::Vector3f& row) {
+          return isMultipleOf (step, row);
+        }))
+      parts[c] =
+          splitChainCluster (clusters[c], triplets, keypoints, kMaxChainRotation, true);
+  }
   TripletClusters split;
-  for (const auto& cluster : clusters) {
-    const auto parts =
-        splitChainCluster (cluster, triplets, keypoints, kMaxChainRotation);
-    if (parts.size() < 2) {
-      split.push_back (cluster);
+  split.reserve (clusters.size());
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    if (parts[c].size() < 2) {
+      split.push_back (clusters[c]);
       continue;
     }
-    for (const auto& members : parts) {
+    for (const auto& members : parts[c]) {
       TripletCluster part;
       for (const std::size_t m : members) {
-        part.triplets.push_back (cluster.triplets[m]);
-        part.reversed.push_back (cluster.reversed[m]);
+        part.triplets.push_back (clusters[c].triplets[m]);
+        part.reversed.push_back (clusters[c].reversed[m]);
       }
       estimateCluster (triplets, part, keypoints, keypoints);
       split.push_back (part);
@@ -329,8 +359,10 @@ TransformationSpaceClustering::clusterCorrespondences (
     clusters.swap (kept);
     std::sort (clusters.begin(), clusters.end(), larger);
   }
-  if (split_chains_ && one_frame)
+  if (split_chains_ && one_frame) {
     splitChains (used_triplets_, *input_, clusters);
+    std::sort (clusters.begin(), clusters.end(), larger);
+  }
 
   clusters_ = clusters;
   for (const auto& cluster : clusters_)

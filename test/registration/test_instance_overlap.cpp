@@ -43,7 +43,7 @@ protected:
   modelOf (int first,
            int last,
            const Eigen::Matrix4f& frame,
-           std::vector<int> copies) const
+           const std::vector<int>& copies) const
   {
     mid::ObjectModel model;
     for (int l = first; l < last; ++l) {

@@ -26,6 +26,7 @@ struct Row
     std::uniform_real_distribution<float> x (-0.03f, 0.03f), y (-0.02f, 0.02f),
         z (-0.015f, 0.015f);
     std::vector<Eigen::Vector3f> object;
+    object.reserve (kPoints);
     for (int i = 0; i < kPoints; ++i)
       object.emplace_back (x (rng), y (rng), z (rng));
     const Eigen::Vector3f origin (-0.2f, 0.0f, 0.9f);
@@ -98,6 +99,17 @@ TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
 TEST (ChainSplitting, LeavesAPairOfCopiesWhole)
 {
   const Row row (2, Eigen::Vector3f (0.0f, 0.0f, 0.09f));
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), row.triplets->size());
+}
+
+TEST (ChainSplitting, LeavesTwoTouchingCopiesWhole)
+{
+  // 6 cm boxes 6.1 cm apart: the largest gap between the phases of the keypoints may lie inside
+  // a box, but a pair of copies is no chain (no keypoint is both a source and a target).
+  const Row row (2, Eigen::Vector3f (0.061f, 0.0f, 0.0f));
   const auto parts =
       mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
   ASSERT_EQ (parts.size(), 1u);

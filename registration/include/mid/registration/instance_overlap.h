@@ -24,7 +24,7 @@ instancesOverlap (const KeypointCloud& keypoints,
                   const ModelInstance& b);
 
 /** \brief Remove the instances of a model that lie on the same physical object as an instance
-  * observing more keypoints (an object with a repeated pattern on one face, such as two
+  * observing at least as many keypoints (on a tie the earlier instance stays) (an object with a repeated pattern on one face, such as two
   * copies of a logo, gives such pairs); the remaining instances keep their order.
   * \param[in] keypoints the frame's keypoints, which the instances index
   * \param[in,out] model the model whose instances are checked

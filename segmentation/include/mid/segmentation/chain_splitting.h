@@ -4,6 +4,8 @@
 #include <mid/registration/triplet_cluster.h>
 #include <mid/registration/triplet_match.h>
 
+#include <Eigen/Core>
+
 #include <cstddef>
 #include <vector>
 
@@ -15,19 +17,24 @@ namespace mid {
   * Copies placed in a regular row (a shelf, a pallet layer) share one relative pose between
   * neighbours: copy 1 -> 2, 2 -> 3, ... all fall into one cluster whose two point sets each
   * span several copies. Abbeloos et al. (3DV 2017, Sec. 5) name this as a limitation of the
-  * method; the model built from such a cluster covers several copies. For a cluster whose pose
-  * is nearly a translation d (rotation below `max_rotation`), every point x gets the chain
+  * method; the model built from such a cluster covers several copies. Such a cluster shows
+  * itself by a keypoint that is both a target (on copy k + 1) and a source (towards copy k + 2),
+  * or by sources spanning more than 1.05 steps along the row; a cluster showing neither (a
+  * single pair of copies) is never split. For a chain whose pose is nearly a translation d
+  * (rotation below `max_rotation`), every point x gets the chain
   * coordinate s(x) = (x - c) . d / |d|^2 (c: centroid of the source points); copies k and k + 1
   * are one unit apart. Copies cannot interpenetrate, so the keypoints of one copy fill less
   * than a unit of s, and the largest empty interval of s modulo 1 separates neighbouring
   * copies: it gives every point its copy number. A triplet whose three source points lie on
   * copy k and whose targets lie on copy k + 1 goes to part k; triplets that straddle copies are
-  * dropped. A cluster whose sources all lie on one copy (the usual pair of instances) is one
-  * part.
+  * dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags and transformation)
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
   * \param[in] max_rotation clusters whose rotation exceeds this (radians) are not split
+  * \param[in] known_row true skips the test for chain evidence: for a cluster whose step is a
+  * multiple of the step of a row found before (copy k -> k + 2 links two copies side by side
+  * to the next two, with neither a shared keypoint nor a long span)
   * \return per part, positions in cluster.triplets of its member triplets, parts in copy order;
   * a single part holding every triplet when the cluster is not a chain
   */
@@ -35,6 +42,16 @@ std::vector<std::vector<std::size_t>>
 splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
-                   float max_rotation);
+                   float max_rotation,
+                   bool known_row = false);
+
+/** \brief The step of a cluster along a row: the displacement its pose gives the centroid of
+  * its source keypoints (for a pure translation, the translation).
+  * \param[in] cluster the cluster (its transformation and source indices)
+  * \param[in] keypoints the frame's keypoints
+  * \return the displacement (metres); zero if the cluster has no source keypoint
+  */
+Eigen::Vector3f
+chainStep (const TripletCluster& cluster, const KeypointCloud& keypoints);
 
 } // namespace mid
