@@ -8,6 +8,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <string>
 
@@ -45,17 +46,10 @@ encode (const char* extension, const cv::Mat& image)
   return {bytes.begin(), bytes.end()};
 }
 
-} // namespace
-
+/** Writes the seed corpus into `dir`; 0 on success. */
 int
-main (int argc, char** argv)
+writeCorpus (const std::string& dir)
 {
-  if (argc != 2) {
-    std::fprintf (
-        stderr, "usage: %s CORPUS_DIR (with pcd/ and rgbd/ inside)\n", argv[0]);
-    return 2;
-  }
-  const std::string dir = argv[1];
   cv::Mat color, depth, gray;
   makeFrame (color, depth);
   cv::cvtColor (color, gray, cv::COLOR_BGR2GRAY);
@@ -80,4 +74,24 @@ main (int argc, char** argv)
        pcl::io::savePCDFileBinaryCompressed (dir + "/pcd/compressed_rgba.pcd", cloud) ==
            0;
   return ok ? 0 : 1;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  if (argc != 2) {
+    std::fprintf (
+        stderr, "usage: %s CORPUS_DIR (with pcd/ and rgbd/ inside)\n", argv[0]);
+    return 2;
+  }
+  try {
+    return writeCorpus (argv[1]);
+  }
+  catch (
+      const std::exception& error) { // OpenCV and PCL report some failures by throwing
+    std::fprintf (stderr, "make_fuzz_corpus: %s\n", error.what());
+    return 1;
+  }
 }
