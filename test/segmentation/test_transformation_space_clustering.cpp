@@ -37,6 +37,7 @@ makeThreeInstances (unsigned seed = 9)
   s.poses.push_back (mid::test::rigidMotion ({0.0f, 0.1f, 1.0f}, 2.0f, {1, 1, 0}));
   s.poses.push_back (mid::test::rigidMotion ({0.25f, -0.05f, 0.95f}, -1.2f, {0, 1, 1}));
   std::vector<Eigen::Vector3f> model;
+  model.reserve (kPoints);
   for (int k = 0; k < kPoints; ++k)
     model.emplace_back (unit (rng) * 0.1f, unit (rng) * 0.1f, unit (rng) * 0.1f);
   for (const auto& pose : s.poses)
