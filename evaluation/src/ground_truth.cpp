@@ -84,13 +84,14 @@ loadBopScene (const std::string& folder, GroundTruthScene& scene)
         const auto translation = entry.at ("cam_t_m2c").get<std::vector<double>>();
         if (rotation.size() != 9 || translation.size() != 3)
           throw std::runtime_error ("cam_R_m2c needs 9 and cam_t_m2c 3 values");
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c)
-            instance.pose (r, c) =
-                static_cast<float> (rotation[static_cast<std::size_t> (3 * r + c)]);
-          instance.pose (r, 3) =
-              static_cast<float> (translation[static_cast<std::size_t> (r)] / 1000.0);
-        }
+        // BOP stores the rotation row by row, the translation in millimetres.
+        instance.pose.topLeftCorner<3, 3>() =
+            Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> (
+                rotation.data())
+                .cast<float>();
+        instance.pose.topRightCorner<3, 1>() =
+            (Eigen::Map<const Eigen::Vector3d> (translation.data()) / 1000.0)
+                .cast<float>();
         if (has_info && info.contains (key)) {
           const auto& i = info.at (key).at (k);
           const auto box = i.at ("bbox_visib").get<std::vector<int>>();
