@@ -198,6 +198,7 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
   // Four juice boxes side by side, 2 cm apart, all turned alike: neighbours share one relative
   // pose (the paper's "objects placed in regular rows").
   std::vector<BoxSpec> row;
+  row.reserve (4);
   for (int k = 0; k < 4; ++k)
     row.push_back (
         {kJuice, {0.12, 0.12, 0.04}, boxPose (-0.21 + 0.14 * k, 0.0, 0.80, 0.0, 20.0)});
