@@ -80,6 +80,16 @@ struct Row
 
 constexpr float kMaxRotation = static_cast<float> (20.0 * M_PI / 180.0);
 
+/** The row's cluster comes out as one part holding every triplet. */
+void
+expectWhole (const Row& row)
+{
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), row.triplets->size());
+}
+
 } // namespace
 
 TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
@@ -99,10 +109,7 @@ TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
 TEST (ChainSplitting, LeavesAPairOfCopiesWhole)
 {
   const Row row (2, Eigen::Vector3f (0.0f, 0.0f, 0.09f));
-  const auto parts =
-      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
-  ASSERT_EQ (parts.size(), 1u);
-  EXPECT_EQ (parts.front().size(), row.triplets->size());
+  expectWhole (row);
 }
 
 TEST (ChainSplitting, LeavesTwoTouchingCopiesWhole)
@@ -110,10 +117,7 @@ TEST (ChainSplitting, LeavesTwoTouchingCopiesWhole)
   // 6 cm boxes 6.1 cm apart: the largest gap between the phases of the keypoints may lie inside
   // a box, but a pair of copies is no chain (no keypoint is both a source and a target).
   const Row row (2, Eigen::Vector3f (0.061f, 0.0f, 0.0f));
-  const auto parts =
-      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
-  ASSERT_EQ (parts.size(), 1u);
-  EXPECT_EQ (parts.front().size(), row.triplets->size());
+  expectWhole (row);
 }
 
 TEST (ChainSplitting, LeavesARotatedChainWhole)
@@ -121,10 +125,7 @@ TEST (ChainSplitting, LeavesARotatedChainWhole)
   // Copies turned by 30 degrees each: not a row of translated copies.
   const Row row (
       4, Eigen::Vector3f (0.08f, 0.0f, 0.0f), static_cast<float> (30.0 * M_PI / 180.0));
-  const auto parts =
-      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
-  ASSERT_EQ (parts.size(), 1u);
-  EXPECT_EQ (parts.front().size(), row.triplets->size());
+  expectWhole (row);
 }
 
 TEST (ChainSplitting, TheClustererGivesOneClusterPerPairOfNeighbours)
