@@ -10,6 +10,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -196,13 +197,15 @@ main (int argc, char** argv)
       return 1;
     }
   }
-  results.insert (results.begin(), dataset);
-  for (const auto& folder : results)
-    if (!fs::is_directory (folder)) {
-      print_error ("'%s' is not a folder.\n", folder.string().c_str());
-      return 1;
-    }
-  results.erase (results.begin());
+  const auto not_folder = [] (const fs::path& folder) {
+    return !fs::is_directory (folder);
+  };
+  const auto missing = std::find_if (results.begin(), results.end(), not_folder);
+  if (not_folder (dataset) || missing != results.end()) {
+    print_error ("'%s' is not a folder.\n",
+                 (not_folder (dataset) ? dataset : *missing).string().c_str());
+    return 1;
+  }
   const std::vector<std::string> names = methodNames (names_list, results);
   if (names.size() != results.size()) {
     print_error (
