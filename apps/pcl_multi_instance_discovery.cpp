@@ -116,6 +116,10 @@ printHelp (const char* program)
   print_info ("  -keep_rows          do not split a cluster that links a row of copies "
               "(the\n");
   print_info ("                      paper's behaviour)\n");
+  print_info ("  -keep_compounds     do not split a cluster whose point sets span two "
+              "touching\n");
+  print_info ("                      copies (half turns, pairs of pairs; the paper's "
+              "behaviour)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
   print_info ("  -grouping G         triplets (ours, default), gcg "
@@ -151,6 +155,7 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-knn", p.matches_per_keypoint);
   p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
   p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
+  p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
   parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
   float degrees = 0.0f;
   if (parse_argument (argc, argv, "-ppf_angle", degrees) >= 0)

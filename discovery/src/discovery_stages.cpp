@@ -177,6 +177,7 @@ groupWithTriplets (const DiscoveryParameters& p,
   clustering.setClusterDistance (p.cluster_distance);
   clustering.setMinClusterSize (p.min_cluster_size);
   clustering.setSplitChains (p.split_chains);
+  clustering.setSplitCompounds (p.split_compounds);
   std::vector<pcl::Correspondences> groups;
   if (!triplets->empty())
     clustering.cluster (groups);

@@ -1,3 +1,5 @@
+#include "largest_gap.h"
+
 #include <mid/segmentation/chain_splitting.h>
 
 #include <Eigen/Geometry>
@@ -16,23 +18,6 @@ namespace {
   * copy spans less than a step; the margin absorbs keypoint noise).
   */
 constexpr double kMinChainSpan = 1.05;
-
-/** The phase in [0, 1) at the middle of the largest empty interval of the phases, on the
-  * circle.
-  */
-double
-cutOfLargestGap (std::vector<double> phases)
-{
-  std::sort (phases.begin(), phases.end());
-  double best_gap = phases.front() + 1.0 - phases.back(),
-         cut = phases.back() + best_gap / 2;
-  for (std::size_t i = 1; i < phases.size(); ++i)
-    if (phases[i] - phases[i - 1] > best_gap) {
-      best_gap = phases[i] - phases[i - 1];
-      cut = phases[i - 1] + best_gap / 2;
-    }
-  return cut - std::floor (cut);
-}
 
 Eigen::Vector3f
 sourceCentroid (const TripletCluster& cluster, const KeypointCloud& keypoints)
@@ -104,7 +89,7 @@ splitChainCluster (const TripletCluster& cluster,
   for (const auto& indices : {cluster.source_indices, cluster.target_indices})
     for (const auto k : indices)
       phases.push_back (chain (k) - std::floor (chain (k)));
-  const double cut = cutOfLargestGap (phases);
+  const double cut = detail::cutOfLargestGap (phases);
   const auto copy = [&] (pcl::index_t k) {
     return static_cast<long> (std::floor (chain (k) - cut));
   };

@@ -1,5 +1,6 @@
 #include <mid/registration/rigid_transform.h>
 #include <mid/segmentation/chain_splitting.h>
+#include <mid/segmentation/compound_splitting.h>
 #include <mid/segmentation/dbscan.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 #include <mid/segmentation/triplet_distance.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 #include <set>
 
@@ -71,6 +73,22 @@ estimateCluster (const TripletMatches& triplets,
   }
 }
 
+/** The part of a cluster made of some of its triplets (positions in cluster.triplets). */
+TripletCluster
+makePart (const TripletCluster& cluster,
+          const std::vector<std::size_t>& members,
+          const TripletMatches& triplets,
+          const KeypointCloud& keypoints)
+{
+  TripletCluster part;
+  for (const std::size_t m : members) {
+    part.triplets.push_back (cluster.triplets[m]);
+    part.reversed.push_back (cluster.reversed[m]);
+  }
+  estimateCluster (triplets, part, keypoints, keypoints);
+  return part;
+}
+
 /** Largest rotation of a cluster that splitChainCluster() may split: rows of copies are
   * related by translations.
   */
@@ -119,17 +137,78 @@ splitChains (const TripletMatches& triplets,
       split.push_back (clusters[c]);
       continue;
     }
-    for (const auto& members : parts[c]) {
-      TripletCluster part;
-      for (const std::size_t m : members) {
-        part.triplets.push_back (clusters[c].triplets[m]);
-        part.reversed.push_back (clusters[c].reversed[m]);
-      }
-      estimateCluster (triplets, part, keypoints, keypoints);
-      split.push_back (part);
-    }
+    for (const auto& members : parts[c])
+      split.push_back (makePart (clusters[c], members, triplets, keypoints));
   }
   clusters.swap (split);
+}
+
+/** Rounds of splitStraddlingCluster() over all cluster pairs (each round splits one). */
+constexpr std::size_t kMaxStraddleSplits = 64;
+
+/** True if the two point sets of a cluster share no keypoint (they lie on two copies). */
+bool
+hasDisjointSets (const TripletCluster& cluster)
+{
+  pcl::Indices shared;
+  std::set_intersection (cluster.source_indices.begin(),
+                         cluster.source_indices.end(),
+                         cluster.target_indices.begin(),
+                         cluster.target_indices.end(),
+                         std::back_inserter (shared));
+  return shared.empty();
+}
+
+/** Make every cluster's point sets lie on one copy each (compound_splitting.h): half turns
+  * are oriented one way, then a cluster whose set straddles the two copies of another cluster
+  * is split in two, until none does.
+  */
+void
+splitCompounds (const TripletMatches& triplets,
+                const KeypointCloud& keypoints,
+                TripletClusters& clusters)
+{
+  std::vector<pcl::Indices> anchors;
+  for (const auto& cluster : clusters)
+    if (hasDisjointSets (cluster)) {
+      anchors.push_back (cluster.source_indices);
+      anchors.push_back (cluster.target_indices);
+    }
+  for (auto& cluster : clusters) {
+    const std::vector<TripletOrientation> orientation =
+        orientHalfTurnCluster (cluster, anchors, triplets, keypoints);
+    TripletCluster oriented;
+    for (std::size_t m = 0; m < orientation.size(); ++m)
+      if (orientation[m] != TripletOrientation::drop) {
+        oriented.triplets.push_back (cluster.triplets[m]);
+        oriented.reversed.push_back (cluster.reversed[m] !=
+                                     (orientation[m] == TripletOrientation::reverse));
+      }
+    if (!oriented.triplets.empty()) {
+      estimateCluster (triplets, oriented, keypoints, keypoints);
+      cluster = oriented;
+    }
+  }
+  for (std::size_t round = 0; round < kMaxStraddleSplits; ++round) {
+    bool split = false;
+    for (std::size_t c = 0; c < clusters.size() && !split; ++c)
+      for (std::size_t o = 0; o < clusters.size() && !split; ++o) {
+        if (o == c || !hasDisjointSets (clusters[o]))
+          continue;
+        const auto parts =
+            splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
+        if (parts.size() < 2)
+          continue;
+        TripletClusters pieces;
+        for (const auto& members : parts)
+          pieces.push_back (makePart (clusters[c], members, triplets, keypoints));
+        clusters.erase (clusters.begin() + static_cast<std::ptrdiff_t> (c));
+        clusters.insert (clusters.end(), pieces.begin(), pieces.end());
+        split = true;
+      }
+    if (!split)
+      break;
+  }
 }
 
 /** True if most of `other`'s triplets, used reversed, agree with `cluster`'s pose within eps:
@@ -361,6 +440,10 @@ TransformationSpaceClustering::clusterCorrespondences (
   }
   if (split_chains_ && one_frame) {
     splitChains (used_triplets_, *input_, clusters);
+    std::sort (clusters.begin(), clusters.end(), larger);
+  }
+  if (split_compounds_ && one_frame) {
+    splitCompounds (used_triplets_, *input_, clusters);
     std::sort (clusters.begin(), clusters.end(), larger);
   }
 

@@ -86,6 +86,11 @@ struct DiscoveryParameters
     * paper, which lists rows as a limitation; see TransformationSpaceClustering::setSplitChains()).
     */
   bool split_chains = true;
+  /** \brief Split clusters whose point sets span two touching copies: half turns and pairs of
+    * pairs (not in the paper, which lists pairs sharing one relative pose as a limitation; see
+    * TransformationSpaceClustering::setSplitCompounds()).
+    */
+  bool split_compounds = true;
 
   // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
   /** \brief The grouping method. */

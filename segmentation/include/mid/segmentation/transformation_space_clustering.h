@@ -166,6 +166,25 @@ public:
   }
   ///@}
 
+  /** \brief Make each cluster's two point sets lie on one copy each: a cluster whose pose is a
+    * half turn swapping two touching copies is oriented one way (orientHalfTurnCluster()), and
+    * a cluster with a point set spanning the two copies of another cluster is split in two
+    * (splitStraddlingCluster()); only for triplets within one frame, after the chains. Default
+    * true; false gives the paper's behaviour, whose models then cover two touching copies.
+    */
+  ///@{
+  void
+  setSplitCompounds (bool split)
+  {
+    split_compounds_ = split;
+  }
+  bool
+  getSplitCompounds () const
+  {
+    return split_compounds_;
+  }
+  ///@}
+
   /** \brief Most neighbour entries (16 bytes each) kept in memory. Within this budget each
     * pair of triplets is compared once; beyond it every region query compares again (same
     * result, about four times the work). Default 8 Mi entries (128 MiB).
@@ -242,6 +261,7 @@ private:
   std::size_t min_cluster_size_ = 14;
   bool merge_inverse_ = true;
   bool split_chains_ = true;
+  bool split_compounds_ = true;
   std::size_t max_stored_neighbors_ = std::size_t{8} << 20;
   TripletMatches used_triplets_;
   TripletClusters clusters_;

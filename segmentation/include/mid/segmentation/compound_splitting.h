@@ -1,0 +1,78 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/triplet_cluster.h>
+#include <mid/registration/triplet_match.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace mid {
+
+/** \brief What becomes of one triplet of a cluster whose point sets span two touching copies
+  * (see orientHalfTurnCluster()).
+  */
+enum class TripletOrientation {
+  keep,    ///< stays as it is
+  reverse, ///< used in the other direction (its targets become its sources)
+  drop     ///< straddles the two copies: removed from the cluster
+};
+
+/** \brief Orient a cluster whose pose is a half turn swapping two touching copies.
+  *
+  * Two copies placed head to tail (one turned by 180 degrees about an axis between them, as a
+  * box turned around next to its twin) are related by a half turn M, and M is its own inverse:
+  * the matches copy A -> copy B and copy B -> copy A fall into one cluster, each of whose point
+  * sets spans both copies. The model built from it would cover both copies as one instance.
+  * Abbeloos et al. (3DV 2017, Sec. 5) list such pairs sharing one relative pose as a
+  * limitation. The cluster shows itself by a pose rotating more than 150 degrees and point sets
+  * that share at least a quarter of the smaller one's keypoints (a keypoint is on one copy, so
+  * a shared one is both a source and a target).
+  *
+  * The copies lie on either side of a plane through the axis of M (the direction R leaves
+  * fixed, through the mean midpoint of the pairs, as each pair's midpoint lies on the axis of a
+  * half turn), and M maps each side onto the other: every such plane agrees with M, so M alone
+  * cannot tell the copies apart (a plane across two cartons lying side by side agrees with it as
+  * well as the plane between them). The plane kept, among 180 through the axis, cuts the fewest
+  * links between keypoints that lie on one copy: keypoints closer than 20 mm (one surface), and
+  * with four times the weight, keypoints within 15 mm of one anchor set (a point set of another
+  * cluster, which lies on a single copy: it tells where a copy ends). Triplets whose sources lie
+  * on one side and targets on the other stay or are reversed so that all go from the same side
+  * to the other; those straddling the plane are dropped.
+  * \param[in] cluster the cluster (its triplets, reversed flags, point sets and transformation)
+  * \param[in] anchors point sets that each lie on one copy (the point sets of the other
+  * clusters); may be empty
+  * \param[in] triplets the triplet matches the cluster indexes
+  * \param[in] keypoints the frame's keypoints (source and target are one cloud)
+  * \return one entry per member triplet; empty when the cluster is not such a half turn
+  */
+std::vector<TripletOrientation>
+orientHalfTurnCluster (const TripletCluster& cluster,
+                       const std::vector<pcl::Indices>& anchors,
+                       const TripletMatches& triplets,
+                       const KeypointCloud& keypoints);
+
+/** \brief Split a cluster one of whose point sets straddles the two copies of another
+  * cluster.
+  *
+  * The two point sets of a cluster lie on two different copies. If a point set of `cluster`
+  * holds at least three keypoints of each of `other`'s point sets, it covers two copies: two
+  * touching copies that share their relative pose with two other ones (copies 1, 2 -> 3, 4,
+  * every second copy of a row, or a pair of pairs on a table). Each keypoint of that point set
+  * takes the side of `other` it belongs to, or the side of its nearest keypoint of `other`'s
+  * sets (3D); a triplet whose three keypoints on that set take one side goes to that side's
+  * part, a triplet across both is dropped.
+  * \param[in] cluster the cluster to split (its triplets, reversed flags and point sets)
+  * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
+  * \param[in] triplets the triplet matches both clusters index
+  * \param[in] keypoints the frame's keypoints (source and target are one cloud)
+  * \return positions in cluster.triplets of the two parts' members; a single part holding every
+  * triplet when neither of `cluster`'s point sets straddles `other`, or one side gets no triplet
+  */
+std::vector<std::vector<std::size_t>>
+splitStraddlingCluster (const TripletCluster& cluster,
+                        const TripletCluster& other,
+                        const TripletMatches& triplets,
+                        const KeypointCloud& keypoints);
+
+} // namespace mid

@@ -1,0 +1,285 @@
+#include <mid/segmentation/compound_splitting.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace mid {
+
+namespace {
+
+/** A half turn rotates by 180 degrees; poses rotating less are not checked. */
+const float kMinHalfTurnAngle = static_cast<float> (150.0 * M_PI / 180.0);
+
+/** Fraction of the smaller point set that the two sets of a half-turn cluster must share. */
+constexpr double kMinSharedFraction = 0.25;
+
+/** A point set straddles another cluster's two copies if at least this many of its keypoints,
+  * and this fraction of them, lie within kMaxStraddleDistance of each of the other's sets.
+  */
+constexpr std::size_t kMinStraddlingPoints = 3;
+constexpr double kMinStraddlingFraction = 0.2;
+constexpr float kMaxStraddleDistance = 0.015f;
+
+/** Keypoints closer to the plane between two half-turn copies than this (metres) take no
+  * side.
+  */
+constexpr float kMinAxisDistance = 0.001f;
+
+/** Keypoints closer than this (metres) are neighbours on one surface. */
+constexpr float kNeighbourRadius = 0.02f;
+
+/** Weight of a link between two keypoints near one anchor set, against 1 for neighbours. */
+constexpr int kAnchorWeight = 4;
+
+/** Planes through the half turn's axis tried, evenly spaced over half a turn. */
+constexpr int kPlaneCandidates = 180;
+
+Eigen::Vector3f
+position (const KeypointCloud& keypoints, pcl::index_t k)
+{
+  return keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+}
+
+/** The source (target) of a triplet's pair, as the cluster uses it (reversed or not). */
+pcl::index_t
+sourceOf (const pcl::Correspondence& c, bool reversed)
+{
+  return reversed ? c.index_match : c.index_query;
+}
+
+pcl::index_t
+targetOf (const pcl::Correspondence& c, bool reversed)
+{
+  return reversed ? c.index_query : c.index_match;
+}
+
+/** Number of keypoints two sorted index lists share. */
+std::size_t
+sharedCount (const pcl::Indices& a, const pcl::Indices& b)
+{
+  pcl::Indices shared;
+  std::set_intersection (
+      a.begin(), a.end(), b.begin(), b.end(), std::back_inserter (shared));
+  return shared.size();
+}
+
+/** Pairs of keypoints (positions in a list) that should lie on one side, with weights. */
+struct Link
+{
+  std::size_t a, b;
+  int weight;
+};
+
+/** Links between the listed keypoints: neighbours on one surface (weight 1), and keypoints
+  * near one anchor set, which lies on a single copy (weight kAnchorWeight).
+  */
+std::vector<Link>
+sameCopyLinks (const pcl::Indices& points,
+               const std::vector<pcl::Indices>& anchors,
+               const KeypointCloud& keypoints)
+{
+  std::vector<Link> links;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      if ((position (keypoints, points[i]) - position (keypoints, points[j])).norm() <
+          kNeighbourRadius)
+        links.push_back ({i, j, 1});
+  for (const auto& anchor : anchors) {
+    std::vector<std::size_t> near;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (std::any_of (anchor.begin(), anchor.end(), [&] (pcl::index_t k) {
+            return (position (keypoints, k) - position (keypoints, points[i])).norm() <
+                   kMaxStraddleDistance;
+          }))
+        near.push_back (i);
+    for (std::size_t i = 0; i < near.size(); ++i)
+      for (std::size_t j = i + 1; j < near.size(); ++j)
+        links.push_back ({near[i], near[j], kAnchorWeight});
+  }
+  return links;
+}
+
+/** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster. */
+std::map<pcl::index_t, int>
+halfTurnSides (const TripletCluster& cluster,
+               const std::vector<pcl::Indices>& anchors,
+               const KeypointCloud& keypoints)
+{
+  const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3>();
+  const Eigen::Vector3f translation = cluster.transformation.topRightCorner<3, 1>();
+  // R = 2 a a^T - I for a half turn about a: the longest column of R + I points along a.
+  const Eigen::Matrix3f fixed = rotation + Eigen::Matrix3f::Identity();
+  Eigen::Index column = 0;
+  fixed.colwise().norm().maxCoeff (&column);
+  const Eigen::Vector3f axis = fixed.col (column).normalized();
+  // Midpoint of x and M(x) lies on the axis.
+  Eigen::Vector3f center = Eigen::Vector3f::Zero();
+  for (const auto k : cluster.source_indices) {
+    const Eigen::Vector3f x = position (keypoints, k);
+    center += 0.5f * (x + rotation * x + translation);
+  }
+  center /= static_cast<float> (cluster.source_indices.size());
+  const Eigen::Vector3f e1 = axis.unitOrthogonal(), e2 = axis.cross (e1);
+
+  pcl::Indices points;
+  std::set_union (cluster.source_indices.begin(),
+                  cluster.source_indices.end(),
+                  cluster.target_indices.begin(),
+                  cluster.target_indices.end(),
+                  std::back_inserter (points));
+  std::vector<Eigen::Vector3f> offsets;
+  for (const auto k : points)
+    offsets.push_back (position (keypoints, k) - center);
+  // Each candidate plane contains the axis; keep the one that cuts the fewest same-copy links.
+  const std::vector<Link> links = sameCopyLinks (points, anchors, keypoints);
+  Eigen::Vector3f normal = e1;
+  long fewest_cut = std::numeric_limits<long>::max();
+  for (int step = 0; step < kPlaneCandidates; ++step) {
+    const double angle = M_PI * step / kPlaneCandidates;
+    const Eigen::Vector3f candidate = static_cast<float> (std::cos (angle)) * e1 +
+                                      static_cast<float> (std::sin (angle)) * e2;
+    long cut = 0;
+    for (const Link& link : links)
+      if ((offsets[link.a].dot (candidate) > 0.0f) !=
+          (offsets[link.b].dot (candidate) > 0.0f))
+        cut += link.weight;
+    if (cut < fewest_cut) {
+      fewest_cut = cut;
+      normal = candidate;
+    }
+  }
+  std::map<pcl::index_t, int> sides;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const float d = offsets[i].dot (normal);
+    sides[points[i]] = std::abs (d) < kMinAxisDistance ? 0 : (d > 0.0f ? 1 : -1);
+  }
+  return sides;
+}
+
+/** A keypoint's nearest keypoint of another cluster's point sets: which set (0: source, 1:
+  * target) and how far (metres).
+  */
+struct NearestSide
+{
+  int side = 0;
+  float distance = std::numeric_limits<float>::infinity();
+};
+
+/** The nearest side of `other` (see NearestSide) of every keypoint in `points`. */
+std::map<pcl::index_t, NearestSide>
+nearestSides (const pcl::Indices& points,
+              const TripletCluster& other,
+              const KeypointCloud& keypoints)
+{
+  std::map<pcl::index_t, NearestSide> sides;
+  for (const auto k : points) {
+    const Eigen::Vector3f x = position (keypoints, k);
+    NearestSide& nearest = sides[k];
+    for (const int side : {0, 1})
+      for (const auto o : side == 0 ? other.source_indices : other.target_indices) {
+        const float d = (position (keypoints, o) - x).norm();
+        if (d < nearest.distance)
+          nearest = {side, d};
+      }
+  }
+  return sides;
+}
+
+/** True if enough keypoints of a point set lie close to each of `other`'s two sets. */
+bool
+straddles (const std::map<pcl::index_t, NearestSide>& sides)
+{
+  std::array<std::size_t, 2> close{0, 0};
+  for (const auto& entry : sides)
+    if (entry.second.distance < kMaxStraddleDistance)
+      ++close[static_cast<std::size_t> (entry.second.side)];
+  const double needed = std::max (static_cast<double> (kMinStraddlingPoints),
+                                  kMinStraddlingFraction * static_cast<double> (sides.size()));
+  return static_cast<double> (close[0]) >= needed &&
+         static_cast<double> (close[1]) >= needed;
+}
+
+} // namespace
+
+std::vector<TripletOrientation>
+orientHalfTurnCluster (const TripletCluster& cluster,
+                       const std::vector<pcl::Indices>& anchors,
+                       const TripletMatches& triplets,
+                       const KeypointCloud& keypoints)
+{
+  const std::size_t smaller =
+      std::min (cluster.source_indices.size(), cluster.target_indices.size());
+  if (smaller == 0 ||
+      Eigen::AngleAxisf (cluster.transformation.topLeftCorner<3, 3>()).angle() <
+          kMinHalfTurnAngle ||
+      static_cast<double> (
+          sharedCount (cluster.source_indices, cluster.target_indices)) <
+          kMinSharedFraction * static_cast<double> (smaller))
+    return {};
+  const std::map<pcl::index_t, int> sides = halfTurnSides (cluster, anchors, keypoints);
+
+  std::vector<TripletOrientation> orientation;
+  orientation.reserve (cluster.triplets.size());
+  for (std::size_t m = 0; m < cluster.triplets.size(); ++m) {
+    const bool reversed = cluster.reversed[m];
+    int source_side = 0, target_side = 0;
+    bool consistent = true;
+    for (const auto& c : triplets[cluster.triplets[m]].correspondences) {
+      const int s = sides.at (sourceOf (c, reversed)), t = sides.at (targetOf (c, reversed));
+      if (source_side == 0)
+        source_side = s;
+      if (target_side == 0)
+        target_side = t;
+      consistent = consistent && s != 0 && s == source_side && t == target_side &&
+                   t == -s;
+    }
+    orientation.push_back (!consistent ? TripletOrientation::drop
+                           : source_side > 0 ? TripletOrientation::keep
+                                             : TripletOrientation::reverse);
+  }
+  return orientation;
+}
+
+std::vector<std::vector<std::size_t>>
+splitStraddlingCluster (const TripletCluster& cluster,
+                        const TripletCluster& other,
+                        const TripletMatches& triplets,
+                        const KeypointCloud& keypoints)
+{
+  std::vector<std::size_t> all (cluster.triplets.size());
+  std::iota (all.begin(), all.end(), std::size_t{0});
+  const std::vector<std::vector<std::size_t>> whole{all};
+  // Split along the straddling set: its keypoints are the sources, or else the targets.
+  const auto source_sides = nearestSides (cluster.source_indices, other, keypoints);
+  const bool on_source = straddles (source_sides);
+  const auto sides =
+      on_source ? source_sides : nearestSides (cluster.target_indices, other, keypoints);
+  if (!on_source && !straddles (sides))
+    return whole;
+
+  std::vector<std::vector<std::size_t>> parts (2);
+  for (std::size_t m = 0; m < cluster.triplets.size(); ++m) {
+    const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
+    const auto side = [&] (const pcl::Correspondence& c) {
+      const bool reversed = cluster.reversed[m];
+      return sides.at (on_source ? sourceOf (c, reversed) : targetOf (c, reversed)).side;
+    };
+    const int first = side (correspondences.front());
+    if (std::all_of (correspondences.begin(),
+                     correspondences.end(),
+                     [&] (const pcl::Correspondence& c) { return side (c) == first; }))
+      parts[static_cast<std::size_t> (first)].push_back (m);
+  }
+  if (parts[0].empty() || parts[1].empty())
+    return whole;
+  return parts;
+}
+
+} // namespace mid
