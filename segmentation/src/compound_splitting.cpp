@@ -200,8 +200,9 @@ straddles (const std::map<pcl::index_t, NearestSide>& sides)
   for (const auto& entry : sides)
     if (entry.second.distance < kMaxStraddleDistance)
       ++close[static_cast<std::size_t> (entry.second.side)];
-  const double needed = std::max (static_cast<double> (kMinStraddlingPoints),
-                                  kMinStraddlingFraction * static_cast<double> (sides.size()));
+  const double needed =
+      std::max (static_cast<double> (kMinStraddlingPoints),
+                kMinStraddlingFraction * static_cast<double> (sides.size()));
   return static_cast<double> (close[0]) >= needed &&
          static_cast<double> (close[1]) >= needed;
 }
@@ -232,15 +233,16 @@ orientHalfTurnCluster (const TripletCluster& cluster,
     int source_side = 0, target_side = 0;
     bool consistent = true;
     for (const auto& c : triplets[cluster.triplets[m]].correspondences) {
-      const int s = sides.at (sourceOf (c, reversed)), t = sides.at (targetOf (c, reversed));
+      const int s = sides.at (sourceOf (c, reversed)),
+                t = sides.at (targetOf (c, reversed));
       if (source_side == 0)
         source_side = s;
       if (target_side == 0)
         target_side = t;
-      consistent = consistent && s != 0 && s == source_side && t == target_side &&
-                   t == -s;
+      consistent =
+          consistent && s != 0 && s == source_side && t == target_side && t == -s;
     }
-    orientation.push_back (!consistent ? TripletOrientation::drop
+    orientation.push_back (!consistent       ? TripletOrientation::drop
                            : source_side > 0 ? TripletOrientation::keep
                                              : TripletOrientation::reverse);
   }
@@ -259,8 +261,9 @@ splitStraddlingCluster (const TripletCluster& cluster,
   // Split along the straddling set: its keypoints are the sources, or else the targets.
   const auto source_sides = nearestSides (cluster.source_indices, other, keypoints);
   const bool on_source = straddles (source_sides);
-  const auto sides =
-      on_source ? source_sides : nearestSides (cluster.target_indices, other, keypoints);
+  const auto sides = on_source
+                         ? source_sides
+                         : nearestSides (cluster.target_indices, other, keypoints);
   if (!on_source && !straddles (sides))
     return whole;
 
@@ -269,7 +272,8 @@ splitStraddlingCluster (const TripletCluster& cluster,
     const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
     const auto side = [&] (const pcl::Correspondence& c) {
       const bool reversed = cluster.reversed[m];
-      return sides.at (on_source ? sourceOf (c, reversed) : targetOf (c, reversed)).side;
+      return sides.at (on_source ? sourceOf (c, reversed) : targetOf (c, reversed))
+          .side;
     };
     const int first = side (correspondences.front());
     if (std::all_of (correspondences.begin(),
