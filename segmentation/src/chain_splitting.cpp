@@ -1,4 +1,4 @@
-#include "largest_gap.h"
+#include "cluster_sets.h"
 
 #include <mid/segmentation/chain_splitting.h>
 
@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <map>
 #include <numeric>
 
@@ -18,6 +17,23 @@ namespace {
   * copy spans less than a step; the margin absorbs keypoint noise).
   */
 constexpr double kMinChainSpan = 1.05;
+
+/** The phase in [0, 1) at the middle of the largest empty interval of the phases, on the
+  * circle.
+  */
+double
+cutOfLargestGap (std::vector<double> phases)
+{
+  std::sort (phases.begin(), phases.end());
+  double best_gap = phases.front() + 1.0 - phases.back(),
+         cut = phases.back() + best_gap / 2;
+  for (std::size_t i = 1; i < phases.size(); ++i)
+    if (phases[i] - phases[i - 1] > best_gap) {
+      best_gap = phases[i] - phases[i - 1];
+      cut = phases[i - 1] + best_gap / 2;
+    }
+  return cut - std::floor (cut);
+}
 
 Eigen::Vector3f
 sourceCentroid (const TripletCluster& cluster, const KeypointCloud& keypoints)
@@ -71,12 +87,8 @@ splitChainCluster (const TripletCluster& cluster,
   // copy k + 2), or by sources that span more than one step along the row (copies cannot
   // interpenetrate, so one copy spans less). A single pair of copies shows neither and is
   // never split: the largest gap of its phases may fall inside the object.
-  std::vector<pcl::index_t> shared;
-  std::set_intersection (cluster.source_indices.begin(),
-                         cluster.source_indices.end(),
-                         cluster.target_indices.begin(),
-                         cluster.target_indices.end(),
-                         std::back_inserter (shared));
+  const pcl::Indices shared =
+      detail::sharedKeypoints (cluster.source_indices, cluster.target_indices);
   const auto [lowest, highest] = std::minmax_element (
       cluster.source_indices.begin(),
       cluster.source_indices.end(),
@@ -89,7 +101,7 @@ splitChainCluster (const TripletCluster& cluster,
   for (const auto& indices : {cluster.source_indices, cluster.target_indices})
     for (const auto k : indices)
       phases.push_back (chain (k) - std::floor (chain (k)));
-  const double cut = detail::cutOfLargestGap (phases);
+  const double cut = cutOfLargestGap (phases);
   const auto copy = [&] (pcl::index_t k) {
     return static_cast<long> (std::floor (chain (k) - cut));
   };
@@ -98,10 +110,10 @@ splitChainCluster (const TripletCluster& cluster,
   for (std::size_t m = 0; m < cluster.triplets.size(); ++m) {
     const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
     const auto source = [&] (const pcl::Correspondence& c) {
-      return cluster.reversed[m] ? c.index_match : c.index_query;
+      return detail::sourceOf (c, cluster.reversed[m]);
     };
     const auto target = [&] (const pcl::Correspondence& c) {
-      return cluster.reversed[m] ? c.index_query : c.index_match;
+      return detail::targetOf (c, cluster.reversed[m]);
     };
     const long first = copy (source (correspondences.front()));
     if (std::all_of (correspondences.begin(),

@@ -1,6 +1,9 @@
+#include "cluster_sets.h"
+
 #include <mid/segmentation/compound_splitting.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <array>
@@ -15,7 +18,7 @@ namespace mid {
 namespace {
 
 /** A half turn rotates by 180 degrees; poses rotating less are not checked. */
-const float kMinHalfTurnAngle = static_cast<float> (150.0 * M_PI / 180.0);
+constexpr float kMinHalfTurnAngle = static_cast<float> (150.0 * M_PI / 180.0);
 
 /** Fraction of the smaller point set that the two sets of a half-turn cluster must share. */
 constexpr double kMinSharedFraction = 0.25;
@@ -27,16 +30,26 @@ constexpr std::size_t kMinStraddlingPoints = 3;
 constexpr double kMinStraddlingFraction = 0.2;
 constexpr float kMaxStraddleDistance = 0.015f;
 
-/** Keypoints closer to the plane between two half-turn copies than this (metres) take no
-  * side.
+/** Keypoints closer than this (metres) to the plane between two half-turn copies take no
+  * side (their triplets are dropped).
   */
-constexpr float kMinAxisDistance = 0.001f;
+constexpr float kMinPlaneDistance = 0.001f;
 
 /** Keypoints closer than this (metres) are neighbours on one surface. */
 constexpr float kNeighbourRadius = 0.02f;
 
-/** Weight of a link between two keypoints near one anchor set, against 1 for neighbours. */
+/** A keypoint of a half-turn cluster this close (metres) to a keypoint of an anchor set is on
+  * the anchor's copy.
+  */
+constexpr float kAnchorRadius = 0.005f;
+
+/** Weight of a link between two keypoints on one anchor, against 1 for neighbours. */
 constexpr int kAnchorWeight = 4;
+
+/** The plane may cut at most this fraction of the anchor links (keypoints near a copy's
+  * border may be near an anchor on the twin).
+  */
+constexpr double kMaxAnchorCut = 0.1;
 
 /** Planes through the half turn's axis tried, evenly spaced over half a turn. */
 constexpr int kPlaneCandidates = 180;
@@ -47,38 +60,15 @@ position (const KeypointCloud& keypoints, pcl::index_t k)
   return keypoints[static_cast<std::size_t> (k)].getVector3fMap();
 }
 
-/** The source (target) of a triplet's pair, as the cluster uses it (reversed or not). */
-pcl::index_t
-sourceOf (const pcl::Correspondence& c, bool reversed)
-{
-  return reversed ? c.index_match : c.index_query;
-}
-
-pcl::index_t
-targetOf (const pcl::Correspondence& c, bool reversed)
-{
-  return reversed ? c.index_query : c.index_match;
-}
-
-/** Number of keypoints two sorted index lists share. */
-std::size_t
-sharedCount (const pcl::Indices& a, const pcl::Indices& b)
-{
-  pcl::Indices shared;
-  std::set_intersection (
-      a.begin(), a.end(), b.begin(), b.end(), std::back_inserter (shared));
-  return shared.size();
-}
-
-/** Pairs of keypoints (positions in a list) that should lie on one side, with weights. */
+/** Two keypoints (positions in a list) that should lie on one side of the plane. */
 struct Link
 {
   std::size_t a, b;
-  int weight;
+  bool anchor; ///< both near one anchor set, else neighbours on one surface
 };
 
-/** Links between the listed keypoints: neighbours on one surface (weight 1), and keypoints
-  * near one anchor set, which lies on a single copy (weight kAnchorWeight).
+/** Links between the listed keypoints: neighbours on one surface, and keypoints near one
+  * anchor set, which lies on a single copy.
   */
 std::vector<Link>
 sameCopyLinks (const pcl::Indices& points,
@@ -90,23 +80,25 @@ sameCopyLinks (const pcl::Indices& points,
     for (std::size_t j = i + 1; j < points.size(); ++j)
       if ((position (keypoints, points[i]) - position (keypoints, points[j])).norm() <
           kNeighbourRadius)
-        links.push_back ({i, j, 1});
+        links.push_back ({i, j, false});
   for (const auto& anchor : anchors) {
     std::vector<std::size_t> near;
     for (std::size_t i = 0; i < points.size(); ++i)
       if (std::any_of (anchor.begin(), anchor.end(), [&] (pcl::index_t k) {
             return (position (keypoints, k) - position (keypoints, points[i])).norm() <
-                   kMaxStraddleDistance;
+                   kAnchorRadius;
           }))
         near.push_back (i);
     for (std::size_t i = 0; i < near.size(); ++i)
       for (std::size_t j = i + 1; j < near.size(); ++j)
-        links.push_back ({near[i], near[j], kAnchorWeight});
+        links.push_back ({near[i], near[j], true});
   }
   return links;
 }
 
-/** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster. */
+/** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster; empty when no
+  * anchor confirms the plane.
+  */
 std::map<pcl::index_t, int>
 halfTurnSides (const TripletCluster& cluster,
                const std::vector<pcl::Indices>& anchors,
@@ -114,18 +106,13 @@ halfTurnSides (const TripletCluster& cluster,
 {
   const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3>();
   const Eigen::Vector3f translation = cluster.transformation.topRightCorner<3, 1>();
-  // R = 2 a a^T - I for a half turn about a: the longest column of R + I points along a.
-  const Eigen::Matrix3f fixed = rotation + Eigen::Matrix3f::Identity();
-  Eigen::Index column = 0;
-  fixed.colwise().norm().maxCoeff (&column);
-  const Eigen::Vector3f axis = fixed.col (column).normalized();
-  // Midpoint of x and M(x) lies on the axis.
-  Eigen::Vector3f center = Eigen::Vector3f::Zero();
-  for (const auto k : cluster.source_indices) {
-    const Eigen::Vector3f x = position (keypoints, k);
-    center += 0.5f * (x + rotation * x + translation);
-  }
-  center /= static_cast<float> (cluster.source_indices.size());
+  const Eigen::Vector3f axis = Eigen::AngleAxisf (rotation).axis();
+  // A point of the axis: (I - R) c = t minus its part along the axis (least squares; I - R is
+  // singular along the axis).
+  const Eigen::Matrix3f about = Eigen::Matrix3f::Identity() - rotation;
+  const Eigen::Vector3f center =
+      about.jacobiSvd (Eigen::ComputeFullU | Eigen::ComputeFullV)
+          .solve (translation - translation.dot (axis) * axis);
   const Eigen::Vector3f e1 = axis.unitOrthogonal(), e2 = axis.cross (e1);
 
   pcl::Indices points;
@@ -139,26 +126,38 @@ halfTurnSides (const TripletCluster& cluster,
     offsets.push_back (position (keypoints, k) - center);
   // Each candidate plane contains the axis; keep the one that cuts the fewest same-copy links.
   const std::vector<Link> links = sameCopyLinks (points, anchors, keypoints);
+  const auto anchor_links = static_cast<std::size_t> (std::count_if (
+      links.begin(), links.end(), [] (const Link& link) { return link.anchor; }));
   Eigen::Vector3f normal = e1;
   long fewest_cut = std::numeric_limits<long>::max();
+  std::size_t anchors_cut = 0;
   for (int step = 0; step < kPlaneCandidates; ++step) {
     const double angle = M_PI * step / kPlaneCandidates;
     const Eigen::Vector3f candidate = static_cast<float> (std::cos (angle)) * e1 +
                                       static_cast<float> (std::sin (angle)) * e2;
     long cut = 0;
+    std::size_t cut_anchor_links = 0;
     for (const Link& link : links)
       if ((offsets[link.a].dot (candidate) > 0.0f) !=
-          (offsets[link.b].dot (candidate) > 0.0f))
-        cut += link.weight;
+          (offsets[link.b].dot (candidate) > 0.0f)) {
+        cut += link.anchor ? kAnchorWeight : 1;
+        cut_anchor_links += link.anchor ? 1 : 0;
+      }
     if (cut < fewest_cut) {
       fewest_cut = cut;
+      anchors_cut = cut_anchor_links;
       normal = candidate;
     }
   }
   std::map<pcl::index_t, int> sides;
+  // Without an anchor that the plane leaves whole, the copies may be the two halves of one
+  // symmetric object, or the plane may cross both copies: leave the cluster as it is.
+  if (anchor_links == 0 || static_cast<double> (anchors_cut) >
+                               kMaxAnchorCut * static_cast<double> (anchor_links))
+    return sides;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const float d = offsets[i].dot (normal);
-    sides[points[i]] = std::abs (d) < kMinAxisDistance ? 0 : (d > 0.0f ? 1 : -1);
+    sides[points[i]] = std::abs (d) < kMinPlaneDistance ? 0 : (d > 0.0f ? 1 : -1);
   }
   return sides;
 }
@@ -217,14 +216,16 @@ orientHalfTurnCluster (const TripletCluster& cluster,
 {
   const std::size_t smaller =
       std::min (cluster.source_indices.size(), cluster.target_indices.size());
-  if (smaller == 0 ||
-      Eigen::AngleAxisf (cluster.transformation.topLeftCorner<3, 3>()).angle() <
-          kMinHalfTurnAngle ||
+  const float angle =
+      Eigen::AngleAxisf (cluster.transformation.topLeftCorner<3, 3>()).angle();
+  if (smaller == 0 || !(angle >= kMinHalfTurnAngle) ||
       static_cast<double> (
-          sharedCount (cluster.source_indices, cluster.target_indices)) <
-          kMinSharedFraction * static_cast<double> (smaller))
+          detail::sharedKeypoints (cluster.source_indices, cluster.target_indices)
+              .size()) < kMinSharedFraction * static_cast<double> (smaller))
     return {};
   const std::map<pcl::index_t, int> sides = halfTurnSides (cluster, anchors, keypoints);
+  if (sides.empty())
+    return {};
 
   std::vector<TripletOrientation> orientation;
   orientation.reserve (cluster.triplets.size());
@@ -233,8 +234,8 @@ orientHalfTurnCluster (const TripletCluster& cluster,
     int source_side = 0, target_side = 0;
     bool consistent = true;
     for (const auto& c : triplets[cluster.triplets[m]].correspondences) {
-      const int s = sides.at (sourceOf (c, reversed)),
-                t = sides.at (targetOf (c, reversed));
+      const int s = sides.at (detail::sourceOf (c, reversed)),
+                t = sides.at (detail::targetOf (c, reversed));
       if (source_side == 0)
         source_side = s;
       if (target_side == 0)
@@ -272,7 +273,9 @@ splitStraddlingCluster (const TripletCluster& cluster,
     const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
     const auto side = [&] (const pcl::Correspondence& c) {
       const bool reversed = cluster.reversed[m];
-      return sides.at (on_source ? sourceOf (c, reversed) : targetOf (c, reversed))
+      return sides
+          .at (on_source ? detail::sourceOf (c, reversed)
+                         : detail::targetOf (c, reversed))
           .side;
     };
     const int first = side (correspondences.front());

@@ -1,3 +1,5 @@
+#include "cluster_sets.h"
+
 #include <mid/registration/rigid_transform.h>
 #include <mid/segmentation/chain_splitting.h>
 #include <mid/segmentation/compound_splitting.h>
@@ -10,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <numeric>
 #include <set>
 
@@ -143,30 +144,58 @@ splitChains (const TripletMatches& triplets,
   clusters.swap (split);
 }
 
-/** Rounds of splitStraddlingCluster() over all cluster pairs (each round splits one). */
+/** Most splits of straddling clusters in one pass (a frame has a few; a bound on the work). */
 constexpr std::size_t kMaxStraddleSplits = 64;
 
 /** True if the two point sets of a cluster share no keypoint (they lie on two copies). */
 bool
 hasDisjointSets (const TripletCluster& cluster)
 {
-  pcl::Indices shared;
-  std::set_intersection (cluster.source_indices.begin(),
-                         cluster.source_indices.end(),
-                         cluster.target_indices.begin(),
-                         cluster.target_indices.end(),
-                         std::back_inserter (shared));
-  return shared.empty();
+  return detail::sharedKeypoints (cluster.source_indices, cluster.target_indices)
+      .empty();
 }
 
-/** Make every cluster's point sets lie on one copy each (compound_splitting.h): half turns
-  * are oriented one way, then a cluster whose set straddles the two copies of another cluster
-  * is split in two, until none does.
+/** Split every cluster with a point set that straddles the two copies of another cluster
+  * (splitStraddlingCluster()), until none does or kMaxStraddleSplits splits were made.
   */
 void
-splitCompounds (const TripletMatches& triplets,
-                const KeypointCloud& keypoints,
-                TripletClusters& clusters)
+splitStraddlers (const TripletMatches& triplets,
+                 const KeypointCloud& keypoints,
+                 TripletClusters& clusters)
+{
+  for (std::size_t round = 0; round < kMaxStraddleSplits; ++round) {
+    bool split = false;
+    for (std::size_t c = 0; c < clusters.size() && !split; ++c)
+      for (std::size_t o = 0; o < clusters.size() && !split; ++o) {
+        if (o == c || !hasDisjointSets (clusters[o]))
+          continue;
+        const auto parts =
+            splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
+        if (parts.size() < 2)
+          continue;
+        TripletClusters pieces;
+        for (const auto& members : parts)
+          pieces.push_back (makePart (clusters[c], members, triplets, keypoints));
+        clusters.erase (clusters.begin() + static_cast<std::ptrdiff_t> (c));
+        clusters.insert (clusters.end(), pieces.begin(), pieces.end());
+        split = true;
+      }
+    if (!split)
+      return;
+  }
+  PCL_DEBUG (
+      "[mid::TransformationSpaceClustering] Stopped splitting straddling clusters "
+      "after %zu splits.\n",
+      kMaxStraddleSplits);
+}
+
+/** Orient every half-turn cluster from one copy to the other (orientHalfTurnCluster()), with
+  * the point sets of the clusters whose sets are disjoint as anchors.
+  */
+void
+orientHalfTurns (const TripletMatches& triplets,
+                 const KeypointCloud& keypoints,
+                 TripletClusters& clusters)
 {
   std::vector<pcl::Indices> anchors;
   for (const auto& cluster : clusters)
@@ -189,26 +218,21 @@ splitCompounds (const TripletMatches& triplets,
       cluster = oriented;
     }
   }
-  for (std::size_t round = 0; round < kMaxStraddleSplits; ++round) {
-    bool split = false;
-    for (std::size_t c = 0; c < clusters.size() && !split; ++c)
-      for (std::size_t o = 0; o < clusters.size() && !split; ++o) {
-        if (o == c || !hasDisjointSets (clusters[o]))
-          continue;
-        const auto parts =
-            splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
-        if (parts.size() < 2)
-          continue;
-        TripletClusters pieces;
-        for (const auto& members : parts)
-          pieces.push_back (makePart (clusters[c], members, triplets, keypoints));
-        clusters.erase (clusters.begin() + static_cast<std::ptrdiff_t> (c));
-        clusters.insert (clusters.end(), pieces.begin(), pieces.end());
-        split = true;
-      }
-    if (!split)
-      break;
-  }
+}
+
+/** Make every cluster's point sets lie on one copy each (compound_splitting.h): clusters
+  * straddling another are split, half turns oriented (with the point sets of the others as
+  * anchors, which must lie on one copy: hence straddlers first), then the oriented half turns
+  * may reveal more straddlers.
+  */
+void
+splitCompounds (const TripletMatches& triplets,
+                const KeypointCloud& keypoints,
+                TripletClusters& clusters)
+{
+  splitStraddlers (triplets, keypoints, clusters);
+  orientHalfTurns (triplets, keypoints, clusters);
+  splitStraddlers (triplets, keypoints, clusters);
 }
 
 /** True if most of `other`'s triplets, used reversed, agree with `cluster`'s pose within eps:

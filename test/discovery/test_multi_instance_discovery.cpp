@@ -212,12 +212,13 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
   expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
   EXPECT_LT (model.diameter, 0.18f); // one box (diagonal 0.17 m), not the row
 
-  // Without the chain splitting and the overlap resolution (the paper's method), the model
+  // Without the chain and compound splitting and the overlap resolution (the paper's method), the model
   // spans several boxes.
   mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> paper;
   paper.setInputCloud (scene.cloud);
   mid::DiscoveryParameters parameters;
   parameters.split_chains = false;
+  parameters.split_compounds = false;
   parameters.resolve_overlaps = false;
   paper.setParameters (parameters);
   mid::DiscoveryResult chained;

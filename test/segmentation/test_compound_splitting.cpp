@@ -70,8 +70,7 @@ struct Copies
             i % 2 == 0 ? pcl::Correspondence (a, b, 0.0f)
                        : pcl::Correspondence (b, a, 0.0f);
       }
-      triplet.transformation =
-          i % 2 == 0 ? motion : Eigen::Matrix4f (motion.inverse());
+      triplet.transformation = i % 2 == 0 ? motion : Eigen::Matrix4f (motion.inverse());
       cluster.triplets.push_back (triplets->size());
       cluster.reversed.push_back (i % 2 != 0);
       cluster.transformation = motion;
@@ -112,7 +111,8 @@ copiesOf (const pcl::Indices& points)
 /** Copy 0 lying at 0.9 m, copy 1 turned about the vertical through its long edge: the two lie
   * side by side, head to tail, and the half turn maps each onto the other.
   */
-const Eigen::Isometry3f kFirst = mid::test::rigidMotion (Eigen::Vector3f (0.0f, 0.1f, 0.9f));
+const Eigen::Isometry3f kFirst =
+    mid::test::rigidMotion (Eigen::Vector3f (0.0f, 0.1f, 0.9f));
 const Eigen::Isometry3f kHalfTurn =
     kFirst * mid::test::rigidMotion (Eigen::Vector3f::Zero(),
                                      static_cast<float> (M_PI),
@@ -141,7 +141,7 @@ TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
   ASSERT_EQ (copiesOf (half_turn.source_indices), (std::set<int>{0, 1}));
 
   // The anchor (copy 0's points matched to copy 2) is needed: a plane across both cartons
-  // agrees with the half turn too, and cuts fewer links between neighbouring keypoints.
+  // agrees with the half turn too (and cuts fewer links between neighbouring keypoints).
   const auto orientation = mid::orientHalfTurnCluster (
       half_turn, {anchor.source_indices}, *scene.triplets, *scene.keypoints);
   ASSERT_EQ (orientation.size(), half_turn.triplets.size());
@@ -162,6 +162,33 @@ TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
   EXPECT_EQ (source_copies.size(), 1u);
   EXPECT_EQ (target_copies.size(), 1u);
   EXPECT_NE (source_copies, target_copies);
+}
+
+TEST (CompoundSplitting, LeavesAHalfTurnWithoutAnAnchorOnOneSideAlone)
+{
+  // Copies 0 and 1 as the two halves of one symmetric object, matched whole to the same
+  // object elsewhere (copies 2 and 3): the anchor spans both sides of every plane.
+  Copies scene;
+  scene.add (kFirst);
+  scene.add (kHalfTurn);
+  const Eigen::Isometry3f away =
+      mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.0f));
+  scene.add (away * kFirst);
+  scene.add (away * kHalfTurn);
+  mid::TripletCluster half_turn, whole;
+  scene.link (0, 1, half_turn);
+  scene.link (1, 0, half_turn);
+  scene.finish (half_turn);
+  scene.link (0, 2, whole);
+  scene.link (1, 3, whole);
+  scene.finish (whole);
+  EXPECT_TRUE (mid::orientHalfTurnCluster (
+                   half_turn, {whole.source_indices}, *scene.triplets, *scene.keypoints)
+                   .empty());
+  // Without any anchor nothing tells the copies apart either.
+  EXPECT_TRUE (
+      mid::orientHalfTurnCluster (half_turn, {}, *scene.triplets, *scene.keypoints)
+          .empty());
 }
 
 TEST (CompoundSplitting, LeavesOtherClustersAlone)
@@ -211,7 +238,8 @@ TEST (CompoundSplitting, SplitsAPairOfPairsAlongTheOtherCluster)
     std::set<int> copies;
     for (const std::size_t m : part)
       for (const auto& c : (*scene.triplets)[pairs.triplets[m]].correspondences)
-        copies.insert ({Copies::copyOf (c.index_query), Copies::copyOf (c.index_match)});
+        copies.insert (
+            {Copies::copyOf (c.index_query), Copies::copyOf (c.index_match)});
     found.insert (copies);
   }
   EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
@@ -244,11 +272,51 @@ TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)
     const auto& clusters = clustering.getClusters();
     ASSERT_EQ (clusters.size(), 2u);
     std::size_t compound = 0;
-    for (const auto& cluster : clusters)
+    for (const auto& cluster : clusters) {
+      // Every triplet stays: 38 each way between copies 0 and 1, 38 from 0 to 2.
+      EXPECT_EQ (cluster.triplets.size(),
+                 static_cast<std::size_t> (copiesOf (cluster.target_indices).count (2)
+                                               ? kPoints - 2
+                                               : 2 * (kPoints - 2)));
       if (copiesOf (cluster.source_indices).size() > 1 ||
           copiesOf (cluster.target_indices).size() > 1)
         ++compound;
+    }
     // The paper's clusterer keeps the half turn's point sets on both copies.
     EXPECT_EQ (compound, split ? 0u : 1u) << "split " << split;
   }
+}
+
+TEST (CompoundSplitting, TheClustererSplitsAPairOfPairs)
+{
+  // Copies 0 and 1 touch side by side, 2 and 3 are the same pair 30 cm further: the clusters
+  // 0, 1 -> 2, 3 and 0, 2 -> 1, 3 each link two copies to two, and split each other.
+  Copies scene;
+  const Eigen::Isometry3f next =
+      mid::test::rigidMotion (Eigen::Vector3f (0.07f, 0.0f, 0.0f));
+  const Eigen::Isometry3f further =
+      mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.0f));
+  scene.add (kFirst);
+  scene.add (next * kFirst);
+  scene.add (further * kFirst);
+  scene.add (further * next * kFirst);
+  mid::TripletCluster unused;
+  scene.link (0, 1, unused);
+  scene.link (2, 3, unused);
+  scene.link (0, 2, unused);
+  scene.link (1, 3, unused);
+  mid::TransformationSpaceClustering clustering;
+  clustering.setInputCloud (scene.keypoints);
+  clustering.setSceneCloud (scene.keypoints);
+  clustering.setInputTriplets (scene.triplets);
+  clustering.setMinClusterSize (5);
+  std::vector<pcl::Correspondences> groups;
+  clustering.cluster (groups);
+  std::set<std::pair<std::set<int>, std::set<int>>> links;
+  for (const auto& cluster : clustering.getClusters())
+    links.emplace (copiesOf (cluster.source_indices),
+                   copiesOf (cluster.target_indices));
+  const std::set<std::pair<std::set<int>, std::set<int>>> expected{
+      {{0}, {1}}, {{2}, {3}}, {{0}, {2}}, {{1}, {3}}};
+  EXPECT_EQ (links, expected);
 }
