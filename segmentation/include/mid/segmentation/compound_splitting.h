@@ -29,22 +29,27 @@ enum class TripletOrientation {
   * that share at least a quarter of the smaller one's keypoints (a keypoint is on one copy, so
   * a shared one is both a source and a target).
   *
-  * The copies lie on either side of a plane through the axis of M (the direction R leaves
-  * fixed, through the mean midpoint of the pairs, as each pair's midpoint lies on the axis of a
-  * half turn), and M maps each side onto the other: every such plane agrees with M, so M alone
-  * cannot tell the copies apart (a plane across two cartons lying side by side agrees with it as
-  * well as the plane between them). The plane kept, among 180 through the axis, cuts the fewest
-  * links between keypoints that lie on one copy: keypoints closer than 20 mm (one surface), and
-  * with four times the weight, keypoints within 15 mm of one anchor set (a point set of another
-  * cluster, which lies on a single copy: it tells where a copy ends). Triplets whose sources lie
-  * on one side and targets on the other stay or are reversed so that all go from the same side
-  * to the other; those straddling the plane are dropped.
+  * The copies lie on either side of a plane through the axis of M (the rotation's axis,
+  * through a point c with (I - R) c = t minus t's part along the axis), and M maps each side
+  * onto the other: every such plane agrees with M, so M alone cannot tell the copies apart (a
+  * plane across two cartons lying side by side agrees with it as well as the plane between
+  * them). The plane kept, among 180 through the axis, cuts the fewest links between keypoints
+  * that lie on one copy: keypoints closer than 20 mm (one surface, weight 1), and keypoints
+  * within 5 mm of one anchor set (a point set of another cluster, which lies on a single copy
+  * and so tells where a copy ends; weight 4). The cluster is oriented only if an anchor
+  * confirms the plane: some anchor links exist and the plane cuts at most 10 % of them. Else
+  * (no third copy matched to one of the two, or the two "copies" are the halves of one object
+  * that looks the same after a half turn, which every anchor spans) it is left as it is.
+  * Triplets whose sources lie on one side and targets on the other stay or are reversed so
+  * that all go from the same side to the other; those straddling the plane, or with a keypoint
+  * within 1 mm of it, are dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags, point sets and transformation)
   * \param[in] anchors point sets that each lie on one copy (the point sets of the other
   * clusters); may be empty
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
-  * \return one entry per member triplet; empty when the cluster is not such a half turn
+  * \return one entry per member triplet; empty when the cluster is not such a half turn or no
+  * anchor confirms the plane
   */
 std::vector<TripletOrientation>
 orientHalfTurnCluster (const TripletCluster& cluster,
@@ -55,13 +60,14 @@ orientHalfTurnCluster (const TripletCluster& cluster,
 /** \brief Split a cluster one of whose point sets straddles the two copies of another
   * cluster.
   *
-  * The two point sets of a cluster lie on two different copies. If a point set of `cluster`
-  * holds at least three keypoints of each of `other`'s point sets, it covers two copies: two
-  * touching copies that share their relative pose with two other ones (copies 1, 2 -> 3, 4,
-  * every second copy of a row, or a pair of pairs on a table). Each keypoint of that point set
-  * takes the side of `other` it belongs to, or the side of its nearest keypoint of `other`'s
+  * The two point sets of a cluster lie on two different copies. If at least three keypoints of
+  * a point set of `cluster`, and a fifth of them, lie within 15 mm of each of `other`'s point
+  * sets, that set covers two copies: two touching copies that share their relative pose with
+  * two other ones (copies 1, 2 -> 3, 4: every second copy of a row, or a pair of pairs on a
+  * table). Each keypoint of that point set takes the side of its nearest keypoint of `other`'s
   * sets (3D); a triplet whose three keypoints on that set take one side goes to that side's
-  * part, a triplet across both is dropped.
+  * part, a triplet across both is dropped. The parts may hold fewer triplets than the
+  * clusterer's minimum cluster size.
   * \param[in] cluster the cluster to split (its triplets, reversed flags and point sets)
   * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
   * \param[in] triplets the triplet matches both clusters index
