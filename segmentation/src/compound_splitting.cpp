@@ -123,7 +123,7 @@ halfTurnSides (const TripletCluster& cluster,
                   std::back_inserter (points));
   std::vector<Eigen::Vector3f> offsets;
   for (const auto k : points)
-    offsets.push_back (position (keypoints, k) - center);
+    offsets.emplace_back (position (keypoints, k) - center);
   // Each candidate plane contains the axis; keep the one that cuts the fewest same-copy links.
   const std::vector<Link> links = sameCopyLinks (points, anchors, keypoints);
   const auto anchor_links = static_cast<std::size_t> (std::count_if (
@@ -258,7 +258,7 @@ splitStraddlingCluster (const TripletCluster& cluster,
 {
   std::vector<std::size_t> all (cluster.triplets.size());
   std::iota (all.begin(), all.end(), std::size_t{0});
-  const std::vector<std::vector<std::size_t>> whole{all};
+  std::vector<std::vector<std::size_t>> whole{all};
   // Split along the straddling set: its keypoints are the sources, or else the targets.
   const auto source_sides = nearestSides (cluster.source_indices, other, keypoints);
   const bool on_source = straddles (source_sides);
