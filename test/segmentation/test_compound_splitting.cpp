@@ -121,14 +121,53 @@ const Eigen::Isometry3f kHalfTurn =
 const Eigen::Isometry3f kThird =
     mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.1f, 0.9f));
 
-} // namespace
-
-TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
+/** Copies 0 and 1 head to tail side by side (kHalfTurn), copy 2 further to the side. */
+Copies
+headToTail ()
 {
   Copies scene;
   scene.add (kFirst);
   scene.add (kHalfTurn);
   scene.add (kThird);
+  return scene;
+}
+
+/** Copies 0 and 1 touching side by side, and 2 and 3 the same pair 30 cm further. */
+Copies
+pairOfPairs ()
+{
+  Copies scene;
+  const Eigen::Isometry3f next =
+      mid::test::rigidMotion (Eigen::Vector3f (0.07f, 0.0f, 0.0f));
+  const Eigen::Isometry3f further =
+      mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.0f));
+  scene.add (kFirst);
+  scene.add (next * kFirst);
+  scene.add (further * kFirst);
+  scene.add (further * next * kFirst);
+  return scene;
+}
+
+/** The clusters of all the scene's triplets (at least 5 per cluster). */
+mid::TripletClusters
+clusterAll (const Copies& scene, bool split_compounds)
+{
+  mid::TransformationSpaceClustering clustering;
+  clustering.setInputCloud (scene.keypoints);
+  clustering.setSceneCloud (scene.keypoints);
+  clustering.setInputTriplets (scene.triplets);
+  clustering.setMinClusterSize (5);
+  clustering.setSplitCompounds (split_compounds);
+  std::vector<pcl::Correspondences> groups;
+  clustering.cluster (groups);
+  return clustering.getClusters();
+}
+
+} // namespace
+
+TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
+{
+  Copies scene = headToTail();
   mid::TripletCluster half_turn, anchor;
   scene.link (0, 1, half_turn);
   scene.link (1, 0, half_turn);
@@ -193,10 +232,7 @@ TEST (CompoundSplitting, LeavesAHalfTurnWithoutAnAnchorOnOneSideAlone)
 
 TEST (CompoundSplitting, LeavesOtherClustersAlone)
 {
-  Copies scene;
-  scene.add (kFirst);
-  scene.add (kHalfTurn);
-  scene.add (kThird);
+  Copies scene = headToTail();
   // A translation, and a half turn seen in one direction only (its point sets are disjoint).
   mid::TripletCluster translation, one_way;
   scene.link (0, 2, translation);
@@ -211,16 +247,7 @@ TEST (CompoundSplitting, LeavesOtherClustersAlone)
 
 TEST (CompoundSplitting, SplitsAPairOfPairsAlongTheOtherCluster)
 {
-  // Copies 0 and 1 touch side by side; 2 and 3 are the same pair 30 cm further.
-  Copies scene;
-  const Eigen::Isometry3f next =
-      mid::test::rigidMotion (Eigen::Vector3f (0.07f, 0.0f, 0.0f));
-  const Eigen::Isometry3f further =
-      mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.0f));
-  scene.add (kFirst);
-  scene.add (next * kFirst);
-  scene.add (further * kFirst);
-  scene.add (further * next * kFirst);
+  Copies scene = pairOfPairs();
   mid::TripletCluster neighbours, pairs, single;
   scene.link (0, 1, neighbours);
   scene.finish (neighbours);
@@ -252,24 +279,13 @@ TEST (CompoundSplitting, SplitsAPairOfPairsAlongTheOtherCluster)
 
 TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)
 {
-  Copies scene;
-  scene.add (kFirst);
-  scene.add (kHalfTurn);
-  scene.add (kThird);
+  Copies scene = headToTail();
   mid::TripletCluster unused;
   scene.link (0, 1, unused);
   scene.link (1, 0, unused);
   scene.link (0, 2, unused);
   for (const bool split : {false, true}) {
-    mid::TransformationSpaceClustering clustering;
-    clustering.setInputCloud (scene.keypoints);
-    clustering.setSceneCloud (scene.keypoints);
-    clustering.setInputTriplets (scene.triplets);
-    clustering.setMinClusterSize (5);
-    clustering.setSplitCompounds (split);
-    std::vector<pcl::Correspondences> groups;
-    clustering.cluster (groups);
-    const auto& clusters = clustering.getClusters();
+    const mid::TripletClusters clusters = clusterAll (scene, split);
     ASSERT_EQ (clusters.size(), 2u);
     std::size_t compound = 0;
     for (const auto& cluster : clusters) {
@@ -289,31 +305,16 @@ TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)
 
 TEST (CompoundSplitting, TheClustererSplitsAPairOfPairs)
 {
-  // Copies 0 and 1 touch side by side, 2 and 3 are the same pair 30 cm further: the clusters
-  // 0, 1 -> 2, 3 and 0, 2 -> 1, 3 each link two copies to two, and split each other.
-  Copies scene;
-  const Eigen::Isometry3f next =
-      mid::test::rigidMotion (Eigen::Vector3f (0.07f, 0.0f, 0.0f));
-  const Eigen::Isometry3f further =
-      mid::test::rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.0f));
-  scene.add (kFirst);
-  scene.add (next * kFirst);
-  scene.add (further * kFirst);
-  scene.add (further * next * kFirst);
+  // The clusters 0, 1 -> 2, 3 and 0, 2 -> 1, 3 each link two copies to two, and split each
+  // other.
+  Copies scene = pairOfPairs();
   mid::TripletCluster unused;
   scene.link (0, 1, unused);
   scene.link (2, 3, unused);
   scene.link (0, 2, unused);
   scene.link (1, 3, unused);
-  mid::TransformationSpaceClustering clustering;
-  clustering.setInputCloud (scene.keypoints);
-  clustering.setSceneCloud (scene.keypoints);
-  clustering.setInputTriplets (scene.triplets);
-  clustering.setMinClusterSize (5);
-  std::vector<pcl::Correspondences> groups;
-  clustering.cluster (groups);
   std::set<std::pair<std::set<int>, std::set<int>>> links;
-  for (const auto& cluster : clustering.getClusters())
+  for (const auto& cluster : clusterAll (scene, true))
     links.emplace (copiesOf (cluster.source_indices),
                    copiesOf (cluster.target_indices));
   const std::set<std::pair<std::set<int>, std::set<int>>> expected{
