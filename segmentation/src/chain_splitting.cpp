@@ -62,7 +62,7 @@ splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
                    float max_rotation,
-                   bool known_row)
+                   const Eigen::Vector3f& row_step)
 {
   std::vector<std::size_t> all (cluster.triplets.size());
   std::iota (all.begin(), all.end(), std::size_t{0});
@@ -73,8 +73,15 @@ splitChainCluster (const TripletCluster& cluster,
     return whole;
 
   const Eigen::Vector3f centroid = sourceCentroid (cluster, keypoints);
-  const Eigen::Vector3f step = chainStep (cluster, keypoints);
+  const bool known_row = row_step.squaredNorm() > 0.0f;
+  // Copies are numbered along the row's step; this cluster links copy k to k + stride.
+  const Eigen::Vector3f own_step = chainStep (cluster, keypoints);
+  const Eigen::Vector3f step = known_row ? row_step : own_step;
   if (!(step.squaredNorm() > 0.0f))
+    return whole;
+  const long stride =
+      known_row ? std::lround (own_step.dot (step) / step.squaredNorm()) : 1;
+  if (stride == 0)
     return whole;
   const auto chain = [&] (pcl::index_t k) {
     return static_cast<double> (
@@ -120,11 +127,12 @@ splitChainCluster (const TripletCluster& cluster,
                      correspondences.end(),
                      [&] (const pcl::Correspondence& c) {
                        return copy (source (c)) == first &&
-                              copy (target (c)) == first + 1;
+                              copy (target (c)) == first + stride;
                      }))
       parts[first].push_back (m);
   }
-  if (parts.size() < 2)
+  // A known row's multiple may link a single pair of copies; its triplets across copies go.
+  if (parts.size() < 2 && !(known_row && parts.size() == 1))
     return whole;
   std::vector<std::vector<std::size_t>> split;
   split.reserve (parts.size());

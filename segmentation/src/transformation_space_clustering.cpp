@@ -95,7 +95,9 @@ makePart (const TripletCluster& cluster,
   */
 constexpr float kMaxChainRotation = static_cast<float> (20.0 * M_PI / 180.0);
 
-/** True if `step` is k times `row` for an integer k >= 2, within a quarter of the row's step. */
+/** True if `step` is k times `row` for an integer |k| >= 2, within a quarter of the row's
+  * step.
+  */
 bool
 isMultipleOf (const Eigen::Vector3f& step, const Eigen::Vector3f& row)
 {
@@ -103,12 +105,13 @@ isMultipleOf (const Eigen::Vector3f& step, const Eigen::Vector3f& row)
   if (!(length > 0.0f))
     return false;
   const float k = std::round (step.dot (row) / (length * length));
-  return k >= 2.0f && (step - k * row).norm() < 0.25f * length;
+  return std::abs (k) >= 2.0f && (step - k * row).norm() < 0.25f * length;
 }
 
 /** Replace every cluster that links a row of copies by its parts (splitChainCluster()): first
-  * the chains, then the clusters whose step is a multiple of a chain's step (copy k -> k + 2
-  * and further, which link groups of neighbouring copies and show no chain evidence).
+  * the chains, then, again and numbered along the row's step, every cluster whose step is a
+  * multiple of a chain's step (copy k -> k + 2 and further: numbered in its own step, copies k
+  * and k + 1 would fall into one unit, and its parts would link pairs of copies).
   */
 void
 splitChains (const TripletMatches& triplets,
@@ -124,17 +127,19 @@ splitChains (const TripletMatches& triplets,
   }
   for (std::size_t c = 0; c < clusters.size(); ++c) {
     const Eigen::Vector3f step = chainStep (clusters[c], keypoints);
-    if (parts[c].size() < 2 &&
-        std::any_of (rows.begin(), rows.end(), [&step] (const Eigen::Vector3f& row) {
+    const auto found =
+        std::find_if (rows.begin(), rows.end(), [&step] (const Eigen::Vector3f& row) {
           return isMultipleOf (step, row);
-        }))
-      parts[c] =
-          splitChainCluster (clusters[c], triplets, keypoints, kMaxChainRotation, true);
+        });
+    if (found != rows.end())
+      parts[c] = splitChainCluster (
+          clusters[c], triplets, keypoints, kMaxChainRotation, *found);
   }
   TripletClusters split;
   split.reserve (clusters.size());
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    if (parts[c].size() < 2) {
+    if (parts[c].size() == 1 &&
+        parts[c].front().size() == clusters[c].triplets.size()) {
       split.push_back (clusters[c]);
       continue;
     }

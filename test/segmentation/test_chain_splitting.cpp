@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <random>
+#include <set>
 
 namespace {
 
@@ -16,11 +17,12 @@ constexpr int kPoints = 12;
 /** `copies` copies of 12 points (a 6 x 4 x 3 cm box's surface) in a row: copy k is copy 0
   * moved by k * step, optionally rotated by `angle` about the vertical per step. Triplets
   * link every copy k to copy k + 1 (every second one stored reversed, k + 1 -> k, as a
-  * self-match may come in either direction).
+  * self-match may come in either direction); `cluster` holds them. With `skip`, triplets also
+  * link every copy k to copy k + 2 (not in `cluster`).
   */
 struct Row
 {
-  Row (int copies, const Eigen::Vector3f& step, float angle = 0.0f)
+  Row (int copies, const Eigen::Vector3f& step, float angle = 0.0f, bool skip = false)
   {
     std::mt19937 rng (3);
     std::uniform_real_distribution<float> x (-0.03f, 0.03f), y (-0.02f, 0.02f),
@@ -47,28 +49,47 @@ struct Row
         (first * mid::test::rigidMotion (step, angle, Eigen::Vector3f::UnitY()) *
          first.inverse())
             .matrix();
-    for (int k = 0; k + 1 < copies; ++k)
-      for (int i = 0; i + 2 < kPoints; ++i) {
-        mid::TripletMatch triplet;
-        for (int c = 0; c < 3; ++c) {
-          const int a = k * kPoints + i + c, b = (k + 1) * kPoints + i + c;
-          triplet.correspondences[static_cast<std::size_t> (c)] =
-              i % 2 == 0 ? pcl::Correspondence (a, b, 0.0f)
-                         : pcl::Correspondence (b, a, 0.0f);
-        }
-        triplet.transformation =
-            i % 2 == 0 ? cluster.transformation
-                       : Eigen::Matrix4f (cluster.transformation.inverse());
-        cluster.triplets.push_back (triplets->size());
-        cluster.reversed.push_back (i % 2 != 0);
-        triplets->push_back (triplet);
-        copy_of.push_back (k);
-      }
+    for (int stride = 1; stride <= (skip ? 2 : 1); ++stride)
+      for (int k = 0; k + stride < copies; ++k)
+        addTriplets (k, stride, first, step, angle);
     for (int k = 0; k + 1 < copies; ++k)
       for (int i = 0; i < kPoints; ++i) {
         cluster.source_indices.push_back (k * kPoints + i);
         cluster.target_indices.push_back ((k + 1) * kPoints + i);
       }
+  }
+
+  /** Triplets linking copy k to copy k + stride (added to `cluster` for stride 1). */
+  void
+  addTriplets (int k,
+               int stride,
+               const Eigen::Isometry3f& first,
+               const Eigen::Vector3f& step,
+               float angle)
+  {
+    const Eigen::Matrix4f motion =
+        (first *
+         mid::test::rigidMotion (static_cast<float> (stride) * step,
+                                 static_cast<float> (stride) * angle,
+                                 Eigen::Vector3f::UnitY()) *
+         first.inverse())
+            .matrix();
+    for (int i = 0; i + 2 < kPoints; ++i) {
+      mid::TripletMatch triplet;
+      for (int c = 0; c < 3; ++c) {
+        const int a = k * kPoints + i + c, b = (k + stride) * kPoints + i + c;
+        triplet.correspondences[static_cast<std::size_t> (c)] =
+            i % 2 == 0 ? pcl::Correspondence (a, b, 0.0f)
+                       : pcl::Correspondence (b, a, 0.0f);
+      }
+      triplet.transformation = i % 2 == 0 ? motion : Eigen::Matrix4f (motion.inverse());
+      if (stride == 1) {
+        cluster.triplets.push_back (triplets->size());
+        cluster.reversed.push_back (i % 2 != 0);
+        copy_of.push_back (k);
+      }
+      triplets->push_back (triplet);
+    }
   }
 
   mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
@@ -153,4 +174,30 @@ TEST (ChainSplitting, TheClustererGivesOneClusterPerPairOfNeighbours)
   clustering.setSplitChains (false);
   clustering.cluster (groups);
   EXPECT_EQ (clustering.getClusters().size(), 1u);
+}
+
+TEST (ChainSplitting, SplitsEverySecondCopyAlongTheRowsStep)
+{
+  // Copies k -> k + 2 form a chain of their own (copies 0, 2, 4 and 1, 3, 5): numbered in its
+  // own step, copies 0 and 1 would be one unit, and its parts would link pairs of copies.
+  const Row row (6, Eigen::Vector3f (0.075f, 0.0f, 0.0f), 0.0f, true);
+  mid::TransformationSpaceClustering clustering;
+  clustering.setInputCloud (row.keypoints);
+  clustering.setSceneCloud (row.keypoints);
+  clustering.setInputTriplets (row.triplets);
+  clustering.setMinClusterSize (5);
+  clustering.setSplitCompounds (false);
+  std::vector<pcl::Correspondences> groups;
+  clustering.cluster (groups);
+  std::multiset<int> strides;
+  for (const auto& cluster : clustering.getClusters()) {
+    const int k = cluster.correspondences.front().index_query / kPoints,
+              stride = cluster.correspondences.front().index_match / kPoints - k;
+    for (const auto& c : cluster.correspondences) {
+      EXPECT_EQ (c.index_query / kPoints, k);
+      EXPECT_EQ (c.index_match / kPoints, k + stride);
+    }
+    strides.insert (stride);
+  }
+  EXPECT_EQ (strides, (std::multiset<int>{1, 1, 1, 1, 1, 2, 2, 2, 2}));
 }

@@ -32,18 +32,21 @@ namespace mid {
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
   * \param[in] max_rotation clusters whose rotation exceeds this (radians) are not split
-  * \param[in] known_row true skips the test for chain evidence: for a cluster whose step is a
-  * multiple of the step of a row found before (copy k -> k + 2 links two copies side by side
-  * to the next two, with neither a shared keypoint nor a long span)
+  * \param[in] row_step zero, or the step of a row found before of which this cluster's step is
+  * a multiple n (|n| >= 2: copy k -> k + n links two or more neighbouring copies to the next
+  * ones, with neither a shared keypoint nor a long span): the test for chain evidence is then
+  * skipped, copies are numbered along row_step, and a triplet goes to part k when its sources
+  * lie on copy k and its targets on copy k + n
   * \return per part, positions in cluster.triplets of its member triplets, parts in copy order;
-  * a single part holding every triplet when the cluster is not a chain
+  * a single part holding every triplet when the cluster is not a chain (with row_step: a
+  * single part may also be the triplets that link one pair of copies, the others dropped)
   */
 std::vector<std::vector<std::size_t>>
 splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
                    float max_rotation,
-                   bool known_row = false);
+                   const Eigen::Vector3f& row_step = Eigen::Vector3f::Zero());
 
 /** \brief The step of a cluster along a row: the displacement its pose gives the centroid of
   * its source keypoints (for a pure translation, the translation).
