@@ -162,6 +162,14 @@ halfTurnSides (const TripletCluster& cluster,
   return sides;
 }
 
+/** The side of a keypoint (0, no side, for a keypoint missing from the cluster's point sets). */
+int
+sideOf (const std::map<pcl::index_t, int>& sides, pcl::index_t k)
+{
+  const auto found = sides.find (k);
+  return found == sides.end() ? 0 : found->second;
+}
+
 /** A keypoint's nearest keypoint of another cluster's point sets: which set (0: source, 1:
   * target) and how far (metres).
   */
@@ -234,8 +242,8 @@ orientHalfTurnCluster (const TripletCluster& cluster,
     int source_side = 0, target_side = 0;
     bool consistent = true;
     for (const auto& c : triplets[cluster.triplets[m]].correspondences) {
-      const int s = sides.at (detail::sourceOf (c, reversed)),
-                t = sides.at (detail::targetOf (c, reversed));
+      const int s = sideOf (sides, detail::sourceOf (c, reversed)),
+                t = sideOf (sides, detail::targetOf (c, reversed));
       if (source_side == 0)
         source_side = s;
       if (target_side == 0)
@@ -273,13 +281,13 @@ splitStraddlingCluster (const TripletCluster& cluster,
     const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
     const auto side = [&] (const pcl::Correspondence& c) {
       const bool reversed = cluster.reversed[m];
-      return sides
-          .at (on_source ? detail::sourceOf (c, reversed)
-                         : detail::targetOf (c, reversed))
-          .side;
+      const auto found = sides.find (on_source ? detail::sourceOf (c, reversed)
+                                               : detail::targetOf (c, reversed));
+      return found == sides.end() ? -1 : found->second.side;
     };
     const int first = side (correspondences.front());
-    if (std::all_of (correspondences.begin(),
+    if (first >= 0 &&
+        std::all_of (correspondences.begin(),
                      correspondences.end(),
                      [&] (const pcl::Correspondence& c) { return side (c) == first; }))
       parts[static_cast<std::size_t> (first)].push_back (m);

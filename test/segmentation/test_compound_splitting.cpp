@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <set>
@@ -230,6 +231,34 @@ TEST (CompoundSplitting, LeavesAHalfTurnWithoutAnAnchorOnOneSideAlone)
           .empty());
 }
 
+TEST (CompoundSplitting, DropsTripletsOutsideTheClustersPointSets)
+{
+  // A cluster whose point sets do not list all its triplets' keypoints (not what the clusterer
+  // makes): those triplets take no side and are dropped, nothing throws.
+  Copies scene = headToTail();
+  mid::TripletCluster half_turn, anchor;
+  scene.link (0, 1, half_turn);
+  scene.link (1, 0, half_turn);
+  scene.finish (half_turn);
+  scene.link (0, 2, anchor);
+  scene.finish (anchor);
+  const pcl::index_t missing = half_turn.source_indices.front();
+  for (auto* set : {&half_turn.source_indices, &half_turn.target_indices})
+    set->erase (std::remove (set->begin(), set->end(), missing), set->end());
+  const auto orientation = mid::orientHalfTurnCluster (
+      half_turn, {anchor.source_indices}, *scene.triplets, *scene.keypoints);
+  ASSERT_EQ (orientation.size(), half_turn.triplets.size());
+  for (std::size_t m = 0; m < orientation.size(); ++m) {
+    bool uses_missing = false;
+    for (const auto& c : (*scene.triplets)[half_turn.triplets[m]].correspondences)
+      uses_missing =
+          uses_missing || c.index_query == missing || c.index_match == missing;
+    if (uses_missing) {
+      EXPECT_EQ (orientation[m], mid::TripletOrientation::drop) << m;
+    }
+  }
+}
+
 TEST (CompoundSplitting, LeavesOtherClustersAlone)
 {
   Copies scene = headToTail();
@@ -270,6 +299,15 @@ TEST (CompoundSplitting, SplitsAPairOfPairsAlongTheOtherCluster)
     found.insert (copies);
   }
   EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
+  // A keypoint missing from the point set (not what the clusterer makes): its triplets take
+  // no side, the others split as before, nothing throws.
+  mid::TripletCluster incomplete = pairs;
+  incomplete.source_indices.erase (incomplete.source_indices.begin());
+  const auto incomplete_parts = mid::splitStraddlingCluster (
+      incomplete, neighbours, *scene.triplets, *scene.keypoints);
+  ASSERT_EQ (incomplete_parts.size(), 2u);
+  EXPECT_LT (incomplete_parts[0].size() + incomplete_parts[1].size(),
+             parts[0].size() + parts[1].size());
   // A cluster between two single copies is left whole.
   EXPECT_EQ (mid::splitStraddlingCluster (
                  single, neighbours, *scene.triplets, *scene.keypoints)

@@ -42,7 +42,7 @@ enum class TripletOrientation {
   * that looks the same after a half turn, which every anchor spans) it is left as it is.
   * Triplets whose sources lie on one side and targets on the other stay or are reversed so
   * that all go from the same side to the other; those straddling the plane, or with a keypoint
-  * within 1 mm of it, are dropped.
+  * within 1 mm of it, or with a keypoint missing from the cluster's point sets, are dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags, point sets and transformation)
   * \param[in] anchors point sets that each lie on one copy (the point sets of the other
   * clusters); may be empty
@@ -66,8 +66,8 @@ orientHalfTurnCluster (const TripletCluster& cluster,
   * two other ones (copies 1, 2 -> 3, 4: every second copy of a row, or a pair of pairs on a
   * table). Each keypoint of that point set takes the side of its nearest keypoint of `other`'s
   * sets (3D); a triplet whose three keypoints on that set take one side goes to that side's
-  * part, a triplet across both is dropped. The parts may hold fewer triplets than the
-  * clusterer's minimum cluster size.
+  * part; a triplet across both, or with a keypoint missing from that point set, is dropped.
+  * The parts may hold fewer triplets than the clusterer's minimum cluster size.
   * \param[in] cluster the cluster to split (its triplets, reversed flags and point sets)
   * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
   * \param[in] triplets the triplet matches both clusters index
