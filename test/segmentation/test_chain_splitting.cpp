@@ -1,8 +1,8 @@
+#include "cluster_triplets.h"
 #include "rigid_motion.h"
 
 #include <mid/registration/triplet_match.h>
 #include <mid/segmentation/chain_splitting.h>
-#include <mid/segmentation/transformation_space_clustering.h>
 
 #include <gtest/gtest.h>
 
@@ -152,15 +152,10 @@ TEST (ChainSplitting, LeavesARotatedChainWhole)
 TEST (ChainSplitting, TheClustererGivesOneClusterPerPairOfNeighbours)
 {
   const Row row (5, Eigen::Vector3f (0.075f, 0.0f, 0.0f));
-  mid::TransformationSpaceClustering clustering;
-  clustering.setInputCloud (row.keypoints);
-  clustering.setSceneCloud (row.keypoints);
-  clustering.setInputTriplets (row.triplets);
-  clustering.setMinClusterSize (5);
-  std::vector<pcl::Correspondences> groups;
-  clustering.cluster (groups);
-  ASSERT_EQ (clustering.getClusters().size(), 4u);
-  for (const auto& cluster : clustering.getClusters()) {
+  const mid::TripletClusters clusters =
+      mid::test::clusterTriplets (row.keypoints, row.triplets);
+  ASSERT_EQ (clusters.size(), 4u);
+  for (const auto& cluster : clusters) {
     // Every pair of a cluster links copy k to copy k + 1 for one k, and the pose is the step.
     const int k = cluster.correspondences.front().index_query / kPoints;
     for (const auto& c : cluster.correspondences) {
@@ -171,9 +166,8 @@ TEST (ChainSplitting, TheClustererGivesOneClusterPerPairOfNeighbours)
                    .second,
                1e-5);
   }
-  clustering.setSplitChains (false);
-  clustering.cluster (groups);
-  EXPECT_EQ (clustering.getClusters().size(), 1u);
+  EXPECT_EQ (mid::test::clusterTriplets (row.keypoints, row.triplets, false).size(),
+             1u);
 }
 
 TEST (ChainSplitting, SplitsEverySecondCopyAlongTheRowsStep)
@@ -181,16 +175,9 @@ TEST (ChainSplitting, SplitsEverySecondCopyAlongTheRowsStep)
   // Copies k -> k + 2 form a chain of their own (copies 0, 2, 4 and 1, 3, 5): numbered in its
   // own step, copies 0 and 1 would be one unit, and its parts would link pairs of copies.
   const Row row (6, Eigen::Vector3f (0.075f, 0.0f, 0.0f), 0.0f, true);
-  mid::TransformationSpaceClustering clustering;
-  clustering.setInputCloud (row.keypoints);
-  clustering.setSceneCloud (row.keypoints);
-  clustering.setInputTriplets (row.triplets);
-  clustering.setMinClusterSize (5);
-  clustering.setSplitCompounds (false);
-  std::vector<pcl::Correspondences> groups;
-  clustering.cluster (groups);
   std::multiset<int> strides;
-  for (const auto& cluster : clustering.getClusters()) {
+  for (const auto& cluster :
+       mid::test::clusterTriplets (row.keypoints, row.triplets, true, false)) {
     const int k = cluster.correspondences.front().index_query / kPoints,
               stride = cluster.correspondences.front().index_match / kPoints - k;
     for (const auto& c : cluster.correspondences) {

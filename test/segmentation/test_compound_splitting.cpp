@@ -1,8 +1,8 @@
+#include "cluster_triplets.h"
 #include "rigid_motion.h"
 
 #include <mid/registration/triplet_match.h>
 #include <mid/segmentation/compound_splitting.h>
-#include <mid/segmentation/transformation_space_clustering.h>
 
 #include <gtest/gtest.h>
 
@@ -147,21 +147,6 @@ pairOfPairs ()
   scene.add (further * kFirst);
   scene.add (further * next * kFirst);
   return scene;
-}
-
-/** The clusters of all the scene's triplets (at least 5 per cluster). */
-mid::TripletClusters
-clusterAll (const Copies& scene, bool split_compounds)
-{
-  mid::TransformationSpaceClustering clustering;
-  clustering.setInputCloud (scene.keypoints);
-  clustering.setSceneCloud (scene.keypoints);
-  clustering.setInputTriplets (scene.triplets);
-  clustering.setMinClusterSize (5);
-  clustering.setSplitCompounds (split_compounds);
-  std::vector<pcl::Correspondences> groups;
-  clustering.cluster (groups);
-  return clustering.getClusters();
 }
 
 } // namespace
@@ -323,7 +308,8 @@ TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)
   scene.link (1, 0, unused);
   scene.link (0, 2, unused);
   for (const bool split : {false, true}) {
-    const mid::TripletClusters clusters = clusterAll (scene, split);
+    const mid::TripletClusters clusters =
+        mid::test::clusterTriplets (scene.keypoints, scene.triplets, true, split);
     ASSERT_EQ (clusters.size(), 2u);
     std::size_t compound = 0;
     for (const auto& cluster : clusters) {
@@ -352,7 +338,8 @@ TEST (CompoundSplitting, TheClustererSplitsAPairOfPairs)
   scene.link (0, 2, unused);
   scene.link (1, 3, unused);
   std::set<std::pair<std::set<int>, std::set<int>>> links;
-  for (const auto& cluster : clusterAll (scene, true))
+  for (const auto& cluster :
+       mid::test::clusterTriplets (scene.keypoints, scene.triplets))
     links.emplace (copiesOf (cluster.source_indices),
                    copiesOf (cluster.target_indices));
   const std::set<std::pair<std::set<int>, std::set<int>>> expected{
