@@ -109,9 +109,12 @@ isMultipleOf (const Eigen::Vector3f& step, const Eigen::Vector3f& row)
 }
 
 /** Replace every cluster that links a row of copies by its parts (splitChainCluster()): first
-  * the chains, then, again and numbered along the row's step, every cluster whose step is a
-  * multiple of a chain's step (copy k -> k + 2 and further: numbered in its own step, copies k
-  * and k + 1 would fall into one unit, and its parts would link pairs of copies).
+  * the chains, then, again and numbered along the row's step, every chain whose step is a
+  * multiple of another chain's step (copies k -> k + 2 forming a chain of their own: numbered in
+  * its own step, copies k and k + 1 fall into one unit, and its parts link pairs of copies). A
+  * multiple that is no chain (copies 1, 2 -> 3, 4) stays whole here: its point sets straddle the
+  * neighbour pairs, and splitCompounds() splits it by keypoint membership, which does not need an
+  * empty gap between touching copies as the numbering does.
   */
 void
 splitChains (const TripletMatches& triplets,
@@ -131,7 +134,7 @@ splitChains (const TripletMatches& triplets,
         std::find_if (rows.begin(), rows.end(), [&step] (const Eigen::Vector3f& row) {
           return isMultipleOf (step, row);
         });
-    if (found != rows.end())
+    if (parts[c].size() > 1 && found != rows.end())
       parts[c] = splitChainCluster (
           clusters[c], triplets, keypoints, kMaxChainRotation, *found);
   }

@@ -33,10 +33,9 @@ namespace mid {
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
   * \param[in] max_rotation clusters whose rotation exceeds this (radians) are not split
   * \param[in] row_step zero, or the step of a row found before of which this cluster's step is
-  * a multiple n (|n| >= 2: copy k -> k + n links two or more neighbouring copies to the next
-  * ones, with neither a shared keypoint nor a long span): the test for chain evidence is then
-  * skipped, copies are numbered along row_step, and a triplet goes to part k when its sources
-  * lie on copy k and its targets on copy k + n
+  * a multiple n (|n| >= 2: copies k -> k + n forming a chain of their own): copies are then
+  * numbered along row_step, the test for chain evidence is skipped, and a triplet goes to part
+  * k when its sources lie on copy k and its targets on copy k + n
   * \return per part, positions in cluster.triplets of its member triplets, parts in copy order;
   * a single part holding every triplet when the cluster is not a chain (with row_step: a
   * single part may also be the triplets that link one pair of copies, the others dropped)
