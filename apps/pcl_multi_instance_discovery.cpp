@@ -103,6 +103,12 @@ printHelp (const char* program)
         static_cast<double> (d.inlier_threshold));
   line (
       "-min_inliers N", "RANSAC minimum inliers", static_cast<double> (d.min_inliers));
+  line ("-merge_inliers N",
+        "RANSAC minimum inliers to merge two models",
+        static_cast<double> (d.min_merge_inliers));
+  line ("-merge_fraction F",
+        "or this share of the smaller model's landmarks",
+        static_cast<double> (d.merge_fraction));
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
@@ -173,6 +179,9 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-inlier", p.inlier_threshold);
   if (parse_argument (argc, argv, "-min_inliers", count) >= 0)
     p.min_inliers = count < 0 ? 0 : static_cast<std::size_t> (count);
+  if (parse_argument (argc, argv, "-merge_inliers", count) >= 0)
+    p.min_merge_inliers = count < 0 ? 0 : static_cast<std::size_t> (count);
+  parse_argument (argc, argv, "-merge_fraction", p.merge_fraction);
   parse_argument (argc, argv, "-min_ratio", p.min_inlier_ratio);
   unsigned seed = 0;
   if (parse_argument (argc, argv, "-seed", seed) >= 0)

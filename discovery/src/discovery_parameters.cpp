@@ -124,6 +124,14 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "> 0");
   c.require (
       p.min_inliers >= 3, "min_inliers", static_cast<double> (p.min_inliers), ">= 3");
+  c.require (p.min_merge_inliers >= 3,
+             "min_merge_inliers",
+             static_cast<double> (p.min_merge_inliers),
+             ">= 3");
+  c.require (p.merge_fraction >= 0.0f && p.merge_fraction <= 1.0f,
+             "merge_fraction",
+             static_cast<double> (p.merge_fraction),
+             "in [0, 1]");
   c.require (p.min_inlier_ratio >= 0.0f && p.min_inlier_ratio < 1.0f,
              "min_inlier_ratio",
              static_cast<double> (p.min_inlier_ratio),

@@ -14,6 +14,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -46,47 +47,15 @@ modelAsKeypoints (const ObjectModel& b, KeypointCloud& keypoints)
     keypoints.push_back (b.landmarks[static_cast<std::size_t> (l)]);
 }
 
-/** Merge models that are one object: model j is searched in model i's landmarks (the larger
-  * first); on success j joins i. Returns false only on a detector error.
-  */
-bool
-mergeModels (const DiscoveryParameters& p,
-             const KeypointCloud& frame,
-             ObjectModels& models)
+/** Inliers that merge models a and b (DiscoveryParameters::min_merge_inliers). */
+std::size_t
+mergeInliers (const DiscoveryParameters& p, const ObjectModel& a, const ObjectModel& b)
 {
-  for (std::size_t i = 0; i < models.size(); ++i)
-    for (std::size_t j = i + 1; j < models.size();) {
-      auto points = pcl::make_shared<KeypointCloud>();
-      modelAsKeypoints (models[i], *points);
-      auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
-      ModelInstanceDetector detector =
-          makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
-      detector.setInputKeypoints (points);
-      detector.setInputDescriptors (descriptors);
-      detector.setMaxInstances (1);
-      ModelInstances found;
-      if (!detector.detect (found))
-        return false;
-      if (found.empty()) {
-        ++j;
-        continue;
-      }
-      // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
-      std::vector<std::pair<int, int>> same;
-      for (std::size_t o = 0; o < found.front().keypoints.size(); ++o)
-        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (
-                               found.front().keypoints[o])],
-                           found.front().landmarks[o]);
-      mergeModel (models[i],
-                  models[j],
-                  found.front().pose.inverse(),
-                  same,
-                  p.duplicate_angle,
-                  p.duplicate_distance);
-      refineModel (models[i], frame, p.refinement_iterations);
-      models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
-    }
-  return true;
+  const auto smaller =
+      static_cast<double> (std::min (a.landmarks.size(), b.landmarks.size()));
+  const auto share = static_cast<std::size_t> (
+      std::ceil (static_cast<double> (p.merge_fraction) * smaller));
+  return std::max (p.min_inliers, std::min (p.min_merge_inliers, share));
 }
 
 /** Keep one instance per physical object, merging models that share one (see
@@ -190,6 +159,47 @@ groupWithTriplets (const DiscoveryParameters& p,
 } // namespace
 
 bool
+mergeMatchingModels (const DiscoveryParameters& p,
+                     const KeypointCloud& frame,
+                     ObjectModels& models)
+{
+  for (std::size_t i = 0; i < models.size(); ++i)
+    for (std::size_t j = i + 1; j < models.size();) {
+      auto points = pcl::make_shared<KeypointCloud>();
+      modelAsKeypoints (models[i], *points);
+      auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
+      ModelInstanceDetector detector =
+          makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
+      detector.setInputKeypoints (points);
+      detector.setInputDescriptors (descriptors);
+      detector.setMaxInstances (1);
+      detector.setMinInliers (mergeInliers (p, models[i], models[j]));
+      ModelInstances found;
+      if (!detector.detect (found))
+        return false;
+      if (found.empty()) {
+        ++j;
+        continue;
+      }
+      // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
+      std::vector<std::pair<int, int>> same;
+      for (std::size_t o = 0; o < found.front().keypoints.size(); ++o)
+        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (
+                               found.front().keypoints[o])],
+                           found.front().landmarks[o]);
+      mergeModel (models[i],
+                  models[j],
+                  found.front().pose.inverse(),
+                  same,
+                  p.duplicate_angle,
+                  p.duplicate_distance);
+      refineModel (models[i], frame, p.refinement_iterations);
+      models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
+    }
+  return true;
+}
+
+bool
 discoverFromKeypoints (const DiscoveryParameters& p,
                        DiscoveryResult& result,
                        const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface)
@@ -244,7 +254,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   result.timing_ms.emplace_back ("modeling", watch.getTime());
 
   watch.reset();
-  if (p.merge_models && !mergeModels (p, *result.keypoints, result.models))
+  if (p.merge_models && !mergeMatchingModels (p, *result.keypoints, result.models))
     return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <limits>
 #include <numeric>
+#include <set>
 
 namespace mid {
 
@@ -18,21 +20,43 @@ namespace {
   */
 constexpr double kMinChainSpan = 1.05;
 
-/** The phase in [0, 1) at the middle of the largest empty interval of the phases, on the
-  * circle.
+/** The cut (in chain units) that numbers the copies: point x lies on copy floor(s(x) - cut).
+  * `positions` are the chain coordinates of the sources and of the targets moved back by the
+  * stride. A cut through the objects puts them on more copies than a cut between copies, so
+  * the cut is the middle of the empty interval of the positions modulo 1 that puts them on
+  * the fewest copies, the largest such interval on a tie. (The largest empty interval alone
+  * may lie inside every copy, between two printed areas, when copies touch.)
   */
 double
-cutOfLargestGap (std::vector<double> phases)
+cutBetweenCopies (const std::vector<double>& positions)
 {
+  std::vector<double> phases;
+  phases.reserve (positions.size());
+  for (const double p : positions)
+    phases.push_back (p - std::floor (p));
   std::sort (phases.begin(), phases.end());
-  double best_gap = phases.front() + 1.0 - phases.back(),
-         cut = phases.back() + best_gap / 2;
-  for (std::size_t i = 1; i < phases.size(); ++i)
-    if (phases[i] - phases[i - 1] > best_gap) {
-      best_gap = phases[i] - phases[i - 1];
-      cut = phases[i - 1] + best_gap / 2;
+  const auto copies = [&positions] (double cut) {
+    std::set<double> numbers;
+    for (const double p : positions)
+      numbers.insert (std::floor (p - cut));
+    return numbers.size();
+  };
+  double best_cut = 0.0, best_gap = -1.0;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    // The gap after phases[i], on the circle.
+    const double next = i + 1 < phases.size() ? phases[i + 1] : phases.front() + 1.0;
+    const double gap = next - phases[i], cut = phases[i] + gap / 2;
+    if (!(gap > 0.0))
+      continue;
+    const std::size_t count = copies (cut);
+    if (count < fewest || (count == fewest && gap > best_gap)) {
+      fewest = count;
+      best_gap = gap;
+      best_cut = cut;
     }
-  return cut - std::floor (cut);
+  }
+  return best_cut;
 }
 
 Eigen::Vector3f
@@ -104,14 +128,26 @@ splitChainCluster (const TripletCluster& cluster,
       chain (*highest) - chain (*lowest) <= kMinChainSpan)
     return whole;
 
-  std::vector<double> phases;
-  for (const auto& indices : {cluster.source_indices, cluster.target_indices})
-    for (const auto k : indices)
-      phases.push_back (chain (k) - std::floor (chain (k)));
-  const double cut = cutOfLargestGap (phases);
+  std::vector<double> positions;
+  for (const auto k : cluster.source_indices)
+    positions.push_back (chain (k));
+  for (const auto k : cluster.target_indices)
+    positions.push_back (chain (k) - static_cast<double> (stride));
+  const double cut = cutBetweenCopies (positions);
   const auto copy = [&] (pcl::index_t k) {
     return static_cast<long> (std::floor (chain (k) - cut));
   };
+  // Without a shared keypoint, the span is the only evidence: the sources must then lie on
+  // consecutive copies of one row. Pairs of copies side by side whose pairs stand apart at no
+  // multiple of the step (copies 0, 2 -> 1, 3 of two pairs of touching copies) are left to the
+  // compound splitting.
+  if (!known_row && shared.empty()) {
+    std::set<long> numbers;
+    for (const auto k : cluster.source_indices)
+      numbers.insert (copy (k));
+    if (*numbers.rbegin() - *numbers.begin() + 1 != static_cast<long> (numbers.size()))
+      return whole;
+  }
 
   std::map<long, std::vector<std::size_t>> parts;
   for (std::size_t m = 0; m < cluster.triplets.size(); ++m) {

@@ -292,8 +292,13 @@ splitStraddlingCluster (const TripletCluster& cluster,
                      [&] (const pcl::Correspondence& c) { return side (c) == first; }))
       parts[static_cast<std::size_t> (first)].push_back (m);
   }
-  if (parts[0].empty() || parts[1].empty())
-    return whole;
+  // Triplets across both copies are gone; a side without a whole triplet gives no part.
+  parts.erase (std::remove_if (parts.begin(),
+                               parts.end(),
+                               [] (const std::vector<std::size_t>& part) {
+                                 return part.empty();
+                               }),
+               parts.end());
   return parts;
 }
 

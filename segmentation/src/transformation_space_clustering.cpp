@@ -164,37 +164,58 @@ hasDisjointSets (const TripletCluster& cluster)
 }
 
 /** Split every cluster with a point set that straddles the two copies of another cluster
-  * (splitStraddlingCluster()), until none does or kMaxStraddleSplits splits were made.
+  * (splitStraddlingCluster()), until none does or kMaxStraddleSplits splits were made; then
+  * drop the clusters none of whose triplets lies on one copy. They go last, as they may be the
+  * only evidence that splits another straddler (copies 0, 1 -> 2, 3 across both copies of each
+  * pair splits 0, 2 -> 1, 3).
   */
 void
 splitStraddlers (const TripletMatches& triplets,
                  const KeypointCloud& keypoints,
                  TripletClusters& clusters)
 {
-  for (std::size_t round = 0; round < kMaxStraddleSplits; ++round) {
-    bool split = false;
-    for (std::size_t c = 0; c < clusters.size() && !split; ++c)
-      for (std::size_t o = 0; o < clusters.size() && !split; ++o) {
-        if (o == c || !hasDisjointSets (clusters[o]))
+  // Whether clusters[o] can split clusters[c]: its point sets must lie on two copies.
+  const auto splits_along = [&] (std::size_t c, std::size_t o) {
+    return o != c && hasDisjointSets (clusters[o]);
+  };
+  const auto split = [&] (std::size_t c, std::size_t o) {
+    return splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
+  };
+  std::size_t splits = 0;
+  for (bool again = true; again && splits < kMaxStraddleSplits;) {
+    again = false;
+    for (std::size_t c = 0; c < clusters.size() && !again; ++c)
+      for (std::size_t o = 0; o < clusters.size() && !again; ++o) {
+        if (!splits_along (c, o))
           continue;
-        const auto parts =
-            splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
-        if (parts.size() < 2)
+        const auto parts = split (c, o);
+        const bool untouched =
+            parts.size() == 1 && parts.front().size() == clusters[c].triplets.size();
+        if (parts.empty() || untouched)
           continue;
         TripletClusters pieces;
         for (const auto& members : parts)
           pieces.push_back (makePart (clusters[c], members, triplets, keypoints));
         clusters.erase (clusters.begin() + static_cast<std::ptrdiff_t> (c));
         clusters.insert (clusters.end(), pieces.begin(), pieces.end());
-        split = true;
+        again = true;
+        ++splits;
       }
-    if (!split)
-      return;
   }
-  PCL_DEBUG (
-      "[mid::TransformationSpaceClustering] Stopped splitting straddling clusters "
-      "after %zu splits.\n",
-      kMaxStraddleSplits);
+  if (splits == kMaxStraddleSplits)
+    PCL_DEBUG (
+        "[mid::TransformationSpaceClustering] Stopped splitting straddling clusters "
+        "after %zu splits.\n",
+        kMaxStraddleSplits);
+  std::vector<bool> across (clusters.size(), false);
+  for (std::size_t c = 0; c < clusters.size(); ++c)
+    for (std::size_t o = 0; o < clusters.size() && !across[c]; ++o)
+      across[c] = splits_along (c, o) && split (c, o).empty();
+  TripletClusters kept;
+  for (std::size_t c = 0; c < clusters.size(); ++c)
+    if (!across[c])
+      kept.push_back (std::move (clusters[c]));
+  clusters.swap (kept);
 }
 
 /** Orient every half-turn cluster from one copy to the other (orientHalfTurnCluster()), with

@@ -261,6 +261,8 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-min_cluster -3",
                              "-inlier 0",
                              "-min_inliers -1",
+                             "-merge_inliers 2",
+                             "-merge_fraction 1.5",
                              "-min_ratio -0.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");

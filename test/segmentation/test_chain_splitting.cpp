@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <random>
 #include <set>
@@ -14,7 +15,21 @@ namespace {
 
 constexpr int kPoints = 12;
 
-/** `copies` copies of 12 points (a 6 x 4 x 3 cm box's surface) in a row: copy k is copy 0
+/** 12 points in a 6 x 4 x 3 cm box centred at the origin. */
+std::vector<Eigen::Vector3f>
+randomBox ()
+{
+  std::mt19937 rng (3);
+  std::uniform_real_distribution<float> x (-0.03f, 0.03f), y (-0.02f, 0.02f),
+      z (-0.015f, 0.015f);
+  std::vector<Eigen::Vector3f> object;
+  object.reserve (kPoints);
+  for (int i = 0; i < kPoints; ++i)
+    object.emplace_back (x (rng), y (rng), z (rng));
+  return object;
+}
+
+/** `copies` copies of 12 object points (by default randomBox()) in a row: copy k is copy 0
   * moved by k * step, optionally rotated by `angle` about the vertical per step. Triplets
   * link every copy k to copy k + 1 (every second one stored reversed, k + 1 -> k, as a
   * self-match may come in either direction); `cluster` holds them. With `skip`, triplets also
@@ -22,15 +37,12 @@ constexpr int kPoints = 12;
   */
 struct Row
 {
-  Row (int copies, const Eigen::Vector3f& step, float angle = 0.0f, bool skip = false)
+  Row (int copies,
+       const Eigen::Vector3f& step,
+       float angle = 0.0f,
+       bool skip = false,
+       const std::vector<Eigen::Vector3f>& object = randomBox())
   {
-    std::mt19937 rng (3);
-    std::uniform_real_distribution<float> x (-0.03f, 0.03f), y (-0.02f, 0.02f),
-        z (-0.015f, 0.015f);
-    std::vector<Eigen::Vector3f> object;
-    object.reserve (kPoints);
-    for (int i = 0; i < kPoints; ++i)
-      object.emplace_back (x (rng), y (rng), z (rng));
     const Eigen::Vector3f origin (-0.2f, 0.0f, 0.9f);
     for (int k = 0; k < copies; ++k) {
       const Eigen::Isometry3f pose =
@@ -117,6 +129,29 @@ TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
 {
   // Four copies 8 cm apart along the row (the box is 6 cm long): three pairs.
   const Row row (4, Eigen::Vector3f (0.08f, 0.0f, 0.01f));
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 3u);
+  for (std::size_t part = 0; part < parts.size(); ++part) {
+    EXPECT_EQ (parts[part].size(), static_cast<std::size_t> (kPoints - 2));
+    for (const std::size_t m : parts[part])
+      EXPECT_EQ (row.copy_of[m], static_cast<int> (part));
+  }
+}
+
+TEST (ChainSplitting, CutsTouchingCopiesBetweenThemNotInsideTheirPrint)
+{
+  // 6 cm boxes 6.1 cm apart whose keypoints leave a 2 cm band without keypoints in every box
+  // (x from -2 to 0 cm): the largest empty interval of the phases lies inside the boxes, the
+  // 1 mm between them is the only cut that puts the row on the fewest copies.
+  std::vector<Eigen::Vector3f> object;
+  const float xs[kPoints] = {
+      -0.03f, -0.026f, -0.022f, -0.02f, 0.0f, 0.005f, 0.01f, 0.015f, 0.02f, 0.025f, 0.028f, 0.03f};
+  for (int i = 0; i < kPoints; ++i) {
+    const auto t = static_cast<float> (i);
+    object.emplace_back (xs[i], 0.02f * std::sin (1.7f * t), 0.015f * std::cos (2.3f * t));
+  }
+  const Row row (4, Eigen::Vector3f (0.061f, 0.0f, 0.0f), 0.0f, false, object);
   const auto parts =
       mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
   ASSERT_EQ (parts.size(), 3u);

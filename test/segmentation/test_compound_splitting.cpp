@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 #include <set>
+#include <utility>
 
 namespace {
 
@@ -53,20 +54,24 @@ struct Copies
 
   /** Triplets linking points i, i+1, i+2 of copy `from` to the same points of copy `to`
     * (every second one stored the other way round, as self-matches come either way), added
-    * to `cluster` (its point sets and pose are left to finish()). If `straddle`, the middle
-    * point of each triplet is taken from copy `to` and matched to copy `from` instead: a
-    * triangle across two copies that a half turn swapping them maps onto itself.
+    * to `cluster` (its point sets and pose are left to finish()). If `middle` names two
+    * copies, the middle point of each triplet is taken from copy middle.first and matched to
+    * copy middle.second instead: a triangle across two copies (with {to, from}, one that a
+    * half turn swapping them maps onto itself).
     */
   void
-  link (int from, int to, mid::TripletCluster& cluster, bool straddle = false)
+  link (int from,
+        int to,
+        mid::TripletCluster& cluster,
+        std::pair<int, int> middle = {-1, -1})
   {
     const Eigen::Matrix4f motion = (poses[to] * poses[from].inverse()).matrix();
     for (int i = 0; i + 2 < kPoints; ++i) {
       mid::TripletMatch triplet;
       for (int c = 0; c < 3; ++c) {
-        const bool across = straddle && c == 1;
-        const int a = index (across ? to : from, i + c),
-                  b = index (across ? from : to, i + c);
+        const bool across = middle.first >= 0 && c == 1;
+        const int a = index (across ? middle.first : from, i + c),
+                  b = index (across ? middle.second : to, i + c);
         triplet.correspondences[static_cast<std::size_t> (c)] =
             i % 2 == 0 ? pcl::Correspondence (a, b, 0.0f)
                        : pcl::Correspondence (b, a, 0.0f);
@@ -158,7 +163,7 @@ TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
   scene.link (0, 1, half_turn);
   scene.link (1, 0, half_turn);
   const std::size_t straight = half_turn.triplets.size();
-  scene.link (0, 1, half_turn, true);
+  scene.link (0, 1, half_turn, {1, 0});
   scene.finish (half_turn);
   scene.link (0, 2, anchor);
   scene.finish (anchor);
@@ -298,6 +303,33 @@ TEST (CompoundSplitting, SplitsAPairOfPairsAlongTheOtherCluster)
                  single, neighbours, *scene.triplets, *scene.keypoints)
                  .size(),
              1u);
+}
+
+TEST (CompoundSplitting, DropsAPairOfPairsWhoseTrianglesSpanBothCopies)
+{
+  // Lying cans touching in pairs: every triangle of the cluster 0, 1 -> 2, 3 has a corner on
+  // each copy of its pair, so no part of it lies on one copy.
+  Copies scene = pairOfPairs();
+  mid::TripletCluster neighbours, across;
+  scene.link (0, 1, neighbours);
+  scene.finish (neighbours);
+  scene.link (0, 2, across, {1, 3});
+  scene.finish (across);
+  ASSERT_EQ (copiesOf (across.source_indices), (std::set<int>{0, 1}));
+  EXPECT_TRUE (mid::splitStraddlingCluster (
+                   across, neighbours, *scene.triplets, *scene.keypoints)
+                   .empty());
+  // The clusterer drops it, after it has split the pair of pairs 0, 2 -> 1, 3 along it.
+  mid::TripletCluster unused;
+  scene.link (2, 3, unused);
+  std::set<std::pair<std::set<int>, std::set<int>>> links;
+  for (const auto& cluster :
+       mid::test::clusterTriplets (scene.keypoints, scene.triplets))
+    links.emplace (copiesOf (cluster.source_indices),
+                   copiesOf (cluster.target_indices));
+  const std::set<std::pair<std::set<int>, std::set<int>>> expected{{{0}, {1}},
+                                                                   {{2}, {3}}};
+  EXPECT_EQ (links, expected);
 }
 
 TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)

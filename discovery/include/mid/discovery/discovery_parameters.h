@@ -125,6 +125,18 @@ struct DiscoveryParameters
   // --- Additional instances (ModelInstanceDetector) ---
   /** \brief Compare the models with each other and merge those that are one object. */
   bool merge_models = true;
+  /** \brief Evidence for merging two models (not in the paper): the RANSAC of one model in the
+    * other's landmarks must find min_merge_inliers inliers (>= 3), or merge_fraction (in
+    * [0, 1]) of the smaller model's landmarks, and never fewer than min_inliers. The paper
+    * compares models with the detection's 5 inliers; on the development frames five chance
+    * matches then merged models of different products (a can row with a carton row), while
+    * models of one product that share few landmarks are small. A fraction of 0 gives the
+    * paper's rule.
+    */
+  ///@{
+  std::size_t min_merge_inliers = 10;
+  float merge_fraction = 0.3f;
+  ///@}
   /** \brief Resolve instances that lie on one physical object (not in the paper; see
     * instancesOverlap()): models with such instances are merged, and of two overlapping
     * instances of one model only the one with more keypoints is kept. A model left with one

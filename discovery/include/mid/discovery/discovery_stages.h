@@ -21,4 +21,18 @@ discoverFromKeypoints (
     DiscoveryResult& result,
     const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr);
 
+/** \brief The pipeline's model merging (DiscoveryParameters::merge_models): every model j is
+  * searched, by descriptor matching and RANSAC (ModelInstanceDetector), among the landmarks of
+  * every model i before it; with enough inliers (DiscoveryParameters::min_merge_inliers) j joins
+  * i (mergeModel()) and i is refined again on the frame's keypoints.
+  * \param[in] parameters the RANSAC and merge parameters
+  * \param[in] frame the keypoints the models' instances refer to
+  * \param[in,out] models the models; merged ones are removed
+  * \return false (with a PCL_ERROR) if the detector refuses a model
+  */
+bool
+mergeMatchingModels (const DiscoveryParameters& parameters,
+                     const KeypointCloud& frame,
+                     ObjectModels& models);
+
 } // namespace mid

@@ -24,8 +24,13 @@ namespace mid {
   * (rotation below `max_rotation`), every point x gets the chain
   * coordinate s(x) = (x - c) . d / |d|^2 (c: centroid of the source points); copies k and k + 1
   * are one unit apart. Copies cannot interpenetrate, so the keypoints of one copy fill less
-  * than a unit of s, and the largest empty interval of s modulo 1 separates neighbouring
-  * copies: it gives every point its copy number. A triplet whose three source points lie on
+  * than a unit of s. A cut c numbers the copies (point x lies on copy floor(s(x) - c)); the
+  * sources, and the targets moved back one unit, spread over n = ceil(max s - min s) copies
+  * for every cut in [max s - n, min s] and over n + 1 for any other cut, which would pass
+  * through the objects. The cut is the middle of the largest empty interval of s modulo 1
+  * within that range: the space between copies, and for touching copies the only place a
+  * boundary can be (an empty interval inside the print of each copy may be larger than the
+  * space between copies and must not be chosen). A triplet whose three source points lie on
   * copy k and whose targets lie on copy k + 1 goes to part k; triplets that straddle copies are
   * dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags and transformation)

@@ -66,14 +66,17 @@ orientHalfTurnCluster (const TripletCluster& cluster,
   * two other ones (copies 1, 2 -> 3, 4: every second copy of a row, or a pair of pairs on a
   * table). Each keypoint of that point set takes the side of its nearest keypoint of `other`'s
   * sets (3D); a triplet whose three keypoints on that set take one side goes to that side's
-  * part; a triplet across both, or with a keypoint missing from that point set, is dropped.
-  * The parts may hold fewer triplets than the clusterer's minimum cluster size.
+  * part; a triplet across both, or with a keypoint missing from that point set, is dropped,
+  * and a side left without triplets gives no part (when every triplet spans both copies, as
+  * for two lying cans matched to the next two, nothing of the cluster is left: its model would
+  * cover two copies). The parts may hold fewer triplets than the clusterer's minimum cluster
+  * size.
   * \param[in] cluster the cluster to split (its triplets, reversed flags and point sets)
   * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
   * \param[in] triplets the triplet matches both clusters index
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
-  * \return positions in cluster.triplets of the two parts' members; a single part holding every
-  * triplet when neither of `cluster`'s point sets straddles `other`, or one side gets no triplet
+  * \return positions in cluster.triplets of the parts' members (two, one or none); a single
+  * part holding every triplet when neither of `cluster`'s point sets straddles `other`
   */
 std::vector<std::vector<std::size_t>>
 splitStraddlingCluster (const TripletCluster& cluster,

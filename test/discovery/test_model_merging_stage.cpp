@@ -1,0 +1,123 @@
+#include "rigid_motion.h"
+
+#include <mid/discovery/discovery_stages.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+/** Landmarks of a model with `count` points on a 12 x 8 x 3 cm object, each with one
+  * descriptor far (L2 > 350) from every other; the first `shared` points and descriptors are
+  * those of `like` (the same object point seen in both models), the others new.
+  */
+mid::ObjectModel
+makeModel (std::size_t count,
+           std::uint32_t seed,
+           const mid::ObjectModel* like = nullptr,
+           std::size_t shared = 0)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> x (-0.06f, 0.06f), y (-0.04f, 0.04f),
+      z (-0.015f, 0.015f), value (0.0f, 200.0f);
+  mid::ObjectModel model;
+  for (std::size_t l = 0; l < count; ++l) {
+    pcl::PointNormal point;
+    mid::SIFTDescriptor descriptor;
+    if (l < shared) {
+      point = like->landmarks[l];
+      descriptor = like->descriptors[l];
+    }
+    else {
+      point.getVector3fMap() = Eigen::Vector3f (x (rng), y (rng), z (rng));
+      for (float& v : descriptor.histogram)
+        v = value (rng);
+    }
+    point.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+    model.landmarks.push_back (point);
+    model.descriptors.push_back (descriptor);
+    model.descriptor_landmarks.push_back (static_cast<int> (l));
+  }
+  mid::updateModelDiameter (model);
+  return model;
+}
+
+/** Place the model's landmarks in the frame at `pose` as a new instance of it. */
+void
+addInstance (mid::ObjectModel& model,
+             const Eigen::Isometry3f& pose,
+             mid::KeypointCloud& frame)
+{
+  mid::ModelInstance instance;
+  instance.pose = pose.matrix();
+  for (std::size_t l = 0; l < model.landmarks.size(); ++l) {
+    pcl::PointNormal point;
+    point.getVector3fMap() = pose * model.landmarks[l].getVector3fMap();
+    point.getNormalVector3fMap() =
+        pose.linear() * model.landmarks[l].getNormalVector3fMap();
+    instance.keypoints.push_back (static_cast<pcl::index_t> (frame.size()));
+    instance.landmarks.push_back (static_cast<int> (l));
+    frame.push_back (point);
+  }
+  model.instances.push_back (instance);
+}
+
+/** Two models with two instances each, the second sharing `shared` of its `count` landmarks
+  * with the first; merged with the given parameters. Returns the models left.
+  */
+mid::ObjectModels
+mergeTwoModels (std::size_t count,
+                std::size_t shared,
+                const mid::DiscoveryParameters& parameters = {})
+{
+  const mid::ObjectModel first = makeModel (40, 1);
+  mid::ObjectModels models{first, makeModel (count, 2, &first, shared)};
+  mid::KeypointCloud frame;
+  addInstance (models[0], mid::test::rigidMotion ({-0.2f, 0.0f, 0.8f}), frame);
+  addInstance (models[0], mid::test::rigidMotion ({0.0f, 0.1f, 0.8f}, 0.5f), frame);
+  addInstance (models[1], mid::test::rigidMotion ({0.2f, 0.0f, 0.8f}, -0.7f), frame);
+  addInstance (models[1], mid::test::rigidMotion ({0.0f, -0.1f, 0.9f}, 1.2f), frame);
+  EXPECT_TRUE (mid::mergeMatchingModels (parameters, frame, models));
+  return models;
+}
+
+} // namespace
+
+TEST (ModelMergingStage, MergesModelsThatShareManyLandmarks)
+{
+  // 14 of 40 shared points: one object seen from two sides. The merged model holds the four
+  // instances at their true relative poses.
+  const mid::ObjectModels models = mergeTwoModels (40, 14);
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models.front().instances.size(), 4u);
+  EXPECT_EQ (models.front().landmarks.size(), 40u + 40u - 14u);
+  const mid::ObjectModel& merged = models.front();
+  const Eigen::Matrix4f truth = (mid::test::rigidMotion ({0.2f, 0.0f, 0.8f}, -0.7f) *
+                                 mid::test::rigidMotion ({-0.2f, 0.0f, 0.8f}).inverse())
+                                    .matrix();
+  const auto error = mid::test::poseError (
+      merged.instances[2].pose * merged.instances[0].pose.inverse(), truth);
+  EXPECT_LT (error.first, 1e-3);
+  EXPECT_LT (error.second, 1e-4);
+}
+
+TEST (ModelMergingStage, KeepsModelsApartOnAFewChanceMatches)
+{
+  // 6 of 40 shared points: two products that share a small print. The paper's rule (any 5
+  // inliers; merge_fraction 0) merges them.
+  EXPECT_EQ (mergeTwoModels (40, 6).size(), 2u);
+  mid::DiscoveryParameters paper;
+  paper.merge_fraction = 0.0f;
+  EXPECT_EQ (mergeTwoModels (40, 6, paper).size(), 1u);
+}
+
+TEST (ModelMergingStage, MergesASmallModelOnAShareOfItsLandmarks)
+{
+  // A 12-landmark model, 6 of them shared: half of the smaller model, more than the 30 %
+  // merge_fraction; a 10-inlier rule alone would keep it apart.
+  EXPECT_EQ (mergeTwoModels (12, 6).size(), 1u);
+  mid::DiscoveryParameters count_only;
+  count_only.merge_fraction = 1.0f;
+  EXPECT_EQ (mergeTwoModels (12, 6, count_only).size(), 2u);
+}
