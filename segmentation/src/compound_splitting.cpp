@@ -293,11 +293,10 @@ splitStraddlingCluster (const TripletCluster& cluster,
       parts[static_cast<std::size_t> (first)].push_back (m);
   }
   // Triplets across both copies are gone; a side without a whole triplet gives no part.
-  parts.erase (std::remove_if (parts.begin(),
-                               parts.end(),
-                               [] (const std::vector<std::size_t>& part) {
-                                 return part.empty();
-                               }),
+  parts.erase (std::remove_if (
+                   parts.begin(),
+                   parts.end(),
+                   [] (const std::vector<std::size_t>& part) { return part.empty(); }),
                parts.end());
   return parts;
 }

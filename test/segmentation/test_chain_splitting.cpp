@@ -145,11 +145,22 @@ TEST (ChainSplitting, CutsTouchingCopiesBetweenThemNotInsideTheirPrint)
   // (x from -2 to 0 cm): the largest empty interval of the phases lies inside the boxes, the
   // 1 mm between them is the only cut that puts the row on the fewest copies.
   std::vector<Eigen::Vector3f> object;
-  const float xs[kPoints] = {
-      -0.03f, -0.026f, -0.022f, -0.02f, 0.0f, 0.005f, 0.01f, 0.015f, 0.02f, 0.025f, 0.028f, 0.03f};
+  const float xs[kPoints] = {-0.03f,
+                             -0.026f,
+                             -0.022f,
+                             -0.02f,
+                             0.0f,
+                             0.005f,
+                             0.01f,
+                             0.015f,
+                             0.02f,
+                             0.025f,
+                             0.028f,
+                             0.03f};
   for (int i = 0; i < kPoints; ++i) {
     const auto t = static_cast<float> (i);
-    object.emplace_back (xs[i], 0.02f * std::sin (1.7f * t), 0.015f * std::cos (2.3f * t));
+    object.emplace_back (
+        xs[i], 0.02f * std::sin (1.7f * t), 0.015f * std::cos (2.3f * t));
   }
   const Row row (4, Eigen::Vector3f (0.061f, 0.0f, 0.0f), 0.0f, false, object);
   const auto parts =
