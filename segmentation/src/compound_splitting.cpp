@@ -292,12 +292,12 @@ splitStraddlingCluster (const TripletCluster& cluster,
                      [&] (const pcl::Correspondence& c) { return side (c) == first; }))
       parts[static_cast<std::size_t> (first)].push_back (m);
   }
-  // Triplets across both copies are gone; a side without a whole triplet gives no part.
-  parts.erase (std::remove_if (
-                   parts.begin(),
-                   parts.end(),
-                   [] (const std::vector<std::size_t>& part) { return part.empty(); }),
-               parts.end());
+  // Every triplet across both copies: nothing of the cluster lies on one copy. Whole triplets
+  // on one side only: the set may be one object with a repeated print, left alone.
+  if (parts[0].empty() && parts[1].empty())
+    return {};
+  if (parts[0].empty() || parts[1].empty())
+    return whole;
   return parts;
 }
 

@@ -332,6 +332,24 @@ TEST (CompoundSplitting, DropsAPairOfPairsWhoseTrianglesSpanBothCopies)
   EXPECT_EQ (links, expected);
 }
 
+TEST (CompoundSplitting, LeavesAStraddlerWithWholeTrianglesOnOneSideOnlyWhole)
+{
+  // Copy 0 -> 2 plus triangles across copies 0, 1 -> 2, 3: only copy 0's side holds whole
+  // triangles. Such a set may be one object whose print repeats (the other cluster's two sets
+  // then lie on it): nothing is cut.
+  Copies scene = pairOfPairs();
+  mid::TripletCluster neighbours, mixed;
+  scene.link (0, 1, neighbours);
+  scene.finish (neighbours);
+  scene.link (0, 2, mixed);
+  scene.link (0, 2, mixed, {1, 3});
+  scene.finish (mixed);
+  const auto parts = mid::splitStraddlingCluster (
+      mixed, neighbours, *scene.triplets, *scene.keypoints);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), mixed.triplets.size());
+}
+
 TEST (CompoundSplitting, TheClustererLeavesEachPointSetOnOneCopy)
 {
   Copies scene = headToTail();

@@ -66,17 +66,19 @@ orientHalfTurnCluster (const TripletCluster& cluster,
   * two other ones (copies 1, 2 -> 3, 4: every second copy of a row, or a pair of pairs on a
   * table). Each keypoint of that point set takes the side of its nearest keypoint of `other`'s
   * sets (3D); a triplet whose three keypoints on that set take one side goes to that side's
-  * part; a triplet across both, or with a keypoint missing from that point set, is dropped,
-  * and a side left without triplets gives no part (when every triplet spans both copies, as
-  * for two lying cans matched to the next two, nothing of the cluster is left: its model would
-  * cover two copies). The parts may hold fewer triplets than the clusterer's minimum cluster
-  * size.
+  * part; a triplet across both, or with a keypoint missing from that point set, is dropped.
+  * When every triplet spans both copies (two lying cans matched to the next two), nothing of
+  * the cluster is left: its model would cover two copies. When only one side gets triplets,
+  * the cluster is left whole: its set may be one object whose print repeats (its two
+  * patterns then are `other`'s two sets). The parts may hold fewer triplets than the
+  * clusterer's minimum cluster size.
   * \param[in] cluster the cluster to split (its triplets, reversed flags and point sets)
   * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
   * \param[in] triplets the triplet matches both clusters index
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
-  * \return positions in cluster.triplets of the parts' members (two, one or none); a single
-  * part holding every triplet when neither of `cluster`'s point sets straddles `other`
+  * \return positions in cluster.triplets of the two parts' members; none when every triplet
+  * spans both copies; a single part holding every triplet when neither of `cluster`'s point
+  * sets straddles `other`, or only one side gets triplets
   */
 std::vector<std::vector<std::size_t>>
 splitStraddlingCluster (const TripletCluster& cluster,
