@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -123,20 +124,30 @@ expectWhole (const Row& row)
   EXPECT_EQ (parts.front().size(), row.triplets->size());
 }
 
+/** The row's cluster comes out as one part per pair of neighbours, in copy order, each with
+  * all of its triplets.
+  */
+void
+expectNeighbourPairs (const Row& row)
+{
+  const auto parts =
+      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(),
+             *std::max_element (row.copy_of.begin(), row.copy_of.end()) + 1u);
+  for (std::size_t part = 0; part < parts.size(); ++part) {
+    EXPECT_EQ (parts[part].size(), static_cast<std::size_t> (kPoints - 2));
+    for (const std::size_t m : parts[part])
+      EXPECT_EQ (row.copy_of[m], static_cast<int> (part));
+  }
+}
+
 } // namespace
 
 TEST (ChainSplitting, SplitsARowIntoNeighbourPairs)
 {
   // Four copies 8 cm apart along the row (the box is 6 cm long): three pairs.
   const Row row (4, Eigen::Vector3f (0.08f, 0.0f, 0.01f));
-  const auto parts =
-      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
-  ASSERT_EQ (parts.size(), 3u);
-  for (std::size_t part = 0; part < parts.size(); ++part) {
-    EXPECT_EQ (parts[part].size(), static_cast<std::size_t> (kPoints - 2));
-    for (const std::size_t m : parts[part])
-      EXPECT_EQ (row.copy_of[m], static_cast<int> (part));
-  }
+  expectNeighbourPairs (row);
 }
 
 TEST (ChainSplitting, CutsTouchingCopiesBetweenThemNotInsideTheirPrint)
@@ -163,14 +174,7 @@ TEST (ChainSplitting, CutsTouchingCopiesBetweenThemNotInsideTheirPrint)
         xs[i], 0.02f * std::sin (1.7f * t), 0.015f * std::cos (2.3f * t));
   }
   const Row row (4, Eigen::Vector3f (0.061f, 0.0f, 0.0f), 0.0f, false, object);
-  const auto parts =
-      mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
-  ASSERT_EQ (parts.size(), 3u);
-  for (std::size_t part = 0; part < parts.size(); ++part) {
-    EXPECT_EQ (parts[part].size(), static_cast<std::size_t> (kPoints - 2));
-    for (const std::size_t m : parts[part])
-      EXPECT_EQ (row.copy_of[m], static_cast<int> (part));
-  }
+  expectNeighbourPairs (row);
 }
 
 TEST (ChainSplitting, LeavesAPairOfCopiesWhole)

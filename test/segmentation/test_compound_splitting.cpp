@@ -114,6 +114,21 @@ copiesOf (const pcl::Indices& points)
   return copies;
 }
 
+/** The copies each cluster's source and target sets lie on. */
+using Links = std::set<std::pair<std::set<int>, std::set<int>>>;
+
+/** The links of the clusters the clusterer makes of all the scene's triplets. */
+Links
+clusteredLinks (const Copies& scene)
+{
+  Links links;
+  for (const auto& cluster :
+       mid::test::clusterTriplets (scene.keypoints, scene.triplets))
+    links.emplace (copiesOf (cluster.source_indices),
+                   copiesOf (cluster.target_indices));
+  return links;
+}
+
 /** Copy 0 lying at 0.9 m, copy 1 turned about the vertical through its long edge: the two lie
   * side by side, head to tail, and the half turn maps each onto the other.
   */
@@ -322,14 +337,7 @@ TEST (CompoundSplitting, DropsAPairOfPairsWhoseTrianglesSpanBothCopies)
   // The clusterer drops it, after it has split the pair of pairs 0, 2 -> 1, 3 along it.
   mid::TripletCluster unused;
   scene.link (2, 3, unused);
-  std::set<std::pair<std::set<int>, std::set<int>>> links;
-  for (const auto& cluster :
-       mid::test::clusterTriplets (scene.keypoints, scene.triplets))
-    links.emplace (copiesOf (cluster.source_indices),
-                   copiesOf (cluster.target_indices));
-  const std::set<std::pair<std::set<int>, std::set<int>>> expected{{{0}, {1}},
-                                                                   {{2}, {3}}};
-  EXPECT_EQ (links, expected);
+  EXPECT_EQ (clusteredLinks (scene), (Links{{{0}, {1}}, {{2}, {3}}}));
 }
 
 TEST (CompoundSplitting, LeavesAStraddlerWithWholeTrianglesOnOneSideOnlyWhole)
@@ -387,12 +395,6 @@ TEST (CompoundSplitting, TheClustererSplitsAPairOfPairs)
   scene.link (2, 3, unused);
   scene.link (0, 2, unused);
   scene.link (1, 3, unused);
-  std::set<std::pair<std::set<int>, std::set<int>>> links;
-  for (const auto& cluster :
-       mid::test::clusterTriplets (scene.keypoints, scene.triplets))
-    links.emplace (copiesOf (cluster.source_indices),
-                   copiesOf (cluster.target_indices));
-  const std::set<std::pair<std::set<int>, std::set<int>>> expected{
-      {{0}, {1}}, {{2}, {3}}, {{0}, {2}}, {{1}, {3}}};
-  EXPECT_EQ (links, expected);
+  EXPECT_EQ (clusteredLinks (scene),
+             (Links{{{0}, {1}}, {{2}, {3}}, {{0}, {2}}, {{1}, {3}}}));
 }
