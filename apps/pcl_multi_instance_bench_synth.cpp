@@ -3,6 +3,8 @@
 // frames in each, with exact ground truth, plus an organized PCD per frame for
 // pcl_multi_instance_discovery. Deterministic for a seed; written all or nothing.
 
+#include "strict_options.h"
+
 #include <mid/io/staged_files.h>
 #include <mid/simulation/benchmark_frame.h>
 #include <mid/simulation/bop_scene_writer.h>
@@ -17,14 +19,11 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -110,44 +109,6 @@ printHelp (const char* program)
 }
 
 bool
-isOneOf (const std::string& argument, const char* const* begin, const char* const* end)
-{
-  return std::find_if (begin, end, [&argument] (const char* option) {
-           return argument == option;
-         }) != end;
-}
-
-/** Strict conversion of a whole decimal string to an integer in [low, high]. */
-bool
-toInteger (const std::string& text, long low, long high, long& value)
-{
-  if (text.empty() ||
-      (text[0] != '-' && !std::isdigit (static_cast<unsigned char> (text[0]))))
-    return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtol (text.c_str(), &end, 10);
-  return errno == 0 && *end == '\0' && value >= low && value <= high;
-}
-
-bool
-parseIntegerOption (
-    int argc, char** argv, const char* name, long low, long high, long& value)
-{
-  std::string text;
-  if (pcl::console::parse_argument (argc, argv, name, text) < 0)
-    return true;
-  if (toInteger (text, low, high, value))
-    return true;
-  print_error ("%s must be an integer in [%ld, %ld], got '%s'.\n",
-               name,
-               low,
-               high,
-               text.c_str());
-  return false;
-}
-
-bool
 parseScenarios (Options& options)
 {
   std::stringstream list (options.scenarios);
@@ -177,26 +138,15 @@ parseScenarios (Options& options)
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (isOneOf (argument, std::begin (kSwitches), std::end (kSwitches)))
-      continue;
-    if (!isOneOf (argument, std::begin (kValueOptions), std::end (kValueOptions))) {
-      print_error ("Unknown argument '%s' (see -h).\n", argv[i]);
-      return false;
-    }
-    if (i + 1 >= argc) {
-      print_error ("Option %s needs a value.\n", argv[i]);
-      return false;
-    }
-    ++i; // the value
-  }
+  if (!mid::apps::onlyKnownArguments (argc, argv, kSwitches, kValueOptions))
+    return false;
   using pcl::console::parse_argument;
   long seed = options.seed, frames = options.frames,
        supersampling = options.supersampling;
-  if (!parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
-      !parseIntegerOption (argc, argv, "-frames", 1, 1000, frames) ||
-      !parseIntegerOption (argc, argv, "-supersampling", 1, 4, supersampling))
+  if (!mid::apps::parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
+      !mid::apps::parseIntegerOption (argc, argv, "-frames", 1, 1000, frames) ||
+      !mid::apps::parseIntegerOption (
+          argc, argv, "-supersampling", 1, 4, supersampling))
     return false;
   options.seed = static_cast<std::uint32_t> (seed);
   options.frames = static_cast<int> (frames);

@@ -2,6 +2,8 @@
 // identical textured objects and a few distractors, with its exact ground truth.
 // Writes scene.pcd, rgb.png, depth.png (16-bit, mm) and ground_truth.json into the output folder.
 
+#include "strict_options.h"
+
 #include <mid/io/staged_files.h>
 #include <mid/simulation/frame_io.h>
 #include <mid/simulation/ground_truth_json.h>
@@ -16,13 +18,9 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
-#include <cctype>
-#include <cerrno>
-#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -86,82 +84,25 @@ printHelp (const char* program)
       "4x4 pose model-to-camera, bbox, visible pixels).\n");
 }
 
-bool
-isOneOf (const std::string& argument, const char* const* begin, const char* const* end)
-{
-  for (const char* const* option = begin; option != end; ++option)
-    if (argument == *option)
-      return true;
-  return false;
-}
-
-/** Strict conversion of a whole decimal string to an integer in [low, high]. */
-bool
-toInteger (const std::string& text, long low, long high, long& value)
-{
-  if (text.empty() ||
-      (text[0] != '-' && !std::isdigit (static_cast<unsigned char> (text[0]))))
-    return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtol (text.c_str(), &end, 10);
-  return errno == 0 && *end == '\0' && value >= low && value <= high;
-}
-
 /** Parse the command line; false (after a one-line error) if it is unusable. */
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (isOneOf (argument, std::begin (kSwitches), std::end (kSwitches)))
-      continue;
-    if (!isOneOf (argument, std::begin (kValueOptions), std::end (kValueOptions))) {
-      print_error ("Unknown argument '%s' (see -h).\n", argv[i]);
-      return false;
-    }
-    if (i + 1 >= argc) {
-      print_error ("Option %s needs a value.\n", argv[i]);
-      return false;
-    }
-    ++i; // the value
-  }
-
+  if (!mid::apps::onlyKnownArguments (argc, argv, kSwitches, kValueOptions))
+    return false;
+  long seed = options.scene.seed, instances = options.scene.instances,
+       distractors = options.scene.distractors, supersampling = options.supersampling;
+  if (!mid::apps::parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
+      !mid::apps::parseIntegerOption (argc, argv, "-instances", 1, 10, instances) ||
+      !mid::apps::parseIntegerOption (argc, argv, "-distractors", 0, 2, distractors) ||
+      !mid::apps::parseIntegerOption (
+          argc, argv, "-supersampling", 1, 4, supersampling))
+    return false;
+  options.scene.seed = static_cast<std::uint32_t> (seed);
+  options.scene.instances = static_cast<int> (instances);
+  options.scene.distractors = static_cast<int> (distractors);
+  options.supersampling = static_cast<int> (supersampling);
   using pcl::console::parse_argument;
-  std::string text;
-  long value = 0;
-  if (parse_argument (argc, argv, "-seed", text) >= 0) {
-    if (!toInteger (text, 0, 4294967295L, value)) {
-      print_error ("-seed must be an integer in [0, 4294967295], got '%s'.\n",
-                   text.c_str());
-      return false;
-    }
-    options.scene.seed = static_cast<std::uint32_t> (value);
-  }
-  if (parse_argument (argc, argv, "-instances", text) >= 0) {
-    if (!toInteger (text, 1, 10, value)) {
-      print_error ("-instances must be an integer in [1, 10], got '%s'.\n",
-                   text.c_str());
-      return false;
-    }
-    options.scene.instances = static_cast<int> (value);
-  }
-  if (parse_argument (argc, argv, "-distractors", text) >= 0) {
-    if (!toInteger (text, 0, 2, value)) {
-      print_error ("-distractors must be an integer in [0, 2], got '%s'.\n",
-                   text.c_str());
-      return false;
-    }
-    options.scene.distractors = static_cast<int> (value);
-  }
-  if (parse_argument (argc, argv, "-supersampling", text) >= 0) {
-    if (!toInteger (text, 1, 4, value)) {
-      print_error ("-supersampling must be an integer in [1, 4], got '%s'.\n",
-                   text.c_str());
-      return false;
-    }
-    options.supersampling = static_cast<int> (value);
-  }
   parse_argument (argc, argv, "-texture_dir", options.texture_dir);
   parse_argument (argc, argv, "-out_dir", options.out_dir);
   parse_argument (argc, argv, "-sensor", options.sensor);
