@@ -47,7 +47,10 @@ modelAsKeypoints (const ObjectModel& b, KeypointCloud& keypoints)
     keypoints.push_back (b.landmarks[static_cast<std::size_t> (l)]);
 }
 
-/** Inliers that merge models a and b (DiscoveryParameters::min_merge_inliers). */
+/** Inliers (descriptor matches) that merge models a and b: min_merge_inliers, or
+  * merge_fraction of the smaller model's landmarks, but at least min_inliers (validated
+  * parameters).
+  */
 std::size_t
 mergeInliers (const DiscoveryParameters& p, const ObjectModel& a, const ObjectModel& b)
 {
@@ -163,6 +166,11 @@ mergeMatchingModels (const DiscoveryParameters& p,
                      const KeypointCloud& frame,
                      ObjectModels& models)
 {
+  std::string problem;
+  if (!validateDiscoveryParameters (p, problem)) {
+    PCL_ERROR ("[mid::mergeMatchingModels] Invalid parameter: %s.\n", problem.c_str());
+    return false;
+  }
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = i + 1; j < models.size();) {
       auto points = pcl::make_shared<KeypointCloud>();

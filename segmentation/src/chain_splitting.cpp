@@ -36,9 +36,9 @@ cutBetweenCopies (const std::vector<double>& positions)
     phases.push_back (p - std::floor (p));
   std::sort (phases.begin(), phases.end());
   const auto copies = [&positions] (double cut) {
-    std::set<double> numbers;
+    std::set<long> numbers;
     for (const double p : positions)
-      numbers.insert (std::floor (p - cut));
+      numbers.insert (static_cast<long> (std::floor (p - cut)));
     return numbers.size();
   };
   double best_cut = 0.0, best_gap = -1.0;
@@ -138,9 +138,9 @@ splitChainCluster (const TripletCluster& cluster,
     return static_cast<long> (std::floor (chain (k) - cut));
   };
   // Without a shared keypoint, the span is the only evidence: the sources must then lie on
-  // consecutive copies of one row. Pairs of copies side by side whose pairs stand apart at no
-  // multiple of the step (copies 0, 2 -> 1, 3 of two pairs of touching copies) are left to the
-  // compound splitting.
+  // consecutive copies of one row. Sources on copies with a gap between them (two pairs of
+  // touching copies far apart, 0, 2 -> 1, 3, or a row whose middle link is missing) are left
+  // to the compound splitting.
   if (!known_row && shared.empty()) {
     std::set<long> numbers;
     for (const auto k : cluster.source_indices)

@@ -182,7 +182,8 @@ splitStraddlers (const TripletMatches& triplets,
     return splitStraddlingCluster (clusters[c], clusters[o], triplets, keypoints);
   };
   std::size_t splits = 0;
-  for (bool again = true; again && splits < kMaxStraddleSplits;) {
+  bool again = true;
+  while (again && splits < kMaxStraddleSplits) {
     again = false;
     for (std::size_t c = 0; c < clusters.size() && !again; ++c)
       for (std::size_t o = 0; o < clusters.size() && !again; ++o) {
@@ -202,7 +203,7 @@ splitStraddlers (const TripletMatches& triplets,
         ++splits;
       }
   }
-  if (splits == kMaxStraddleSplits)
+  if (again) // the last split may have left more to split
     PCL_DEBUG (
         "[mid::TransformationSpaceClustering] Stopped splitting straddling clusters "
         "after %zu splits.\n",

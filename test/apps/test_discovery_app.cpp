@@ -263,6 +263,7 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-min_inliers -1",
                              "-merge_inliers 2",
                              "-merge_fraction 1.5",
+                             "-merge_fraction -0.1",
                              "-min_ratio -0.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
+#include <string>
 
 namespace {
 
@@ -78,7 +80,9 @@ mergeTwoModels (std::size_t count,
   addInstance (models[0], mid::test::rigidMotion ({0.0f, 0.1f, 0.8f}, 0.5f), frame);
   addInstance (models[1], mid::test::rigidMotion ({0.2f, 0.0f, 0.8f}, -0.7f), frame);
   addInstance (models[1], mid::test::rigidMotion ({0.0f, -0.1f, 0.9f}, 1.2f), frame);
-  EXPECT_TRUE (mid::mergeMatchingModels (parameters, frame, models));
+  std::string problem;
+  EXPECT_EQ (mid::mergeMatchingModels (parameters, frame, models),
+             mid::validateDiscoveryParameters (parameters, problem));
   return models;
 }
 
@@ -120,4 +124,14 @@ TEST (ModelMergingStage, MergesASmallModelOnAShareOfItsLandmarks)
   mid::DiscoveryParameters count_only;
   count_only.merge_fraction = 1.0f;
   EXPECT_EQ (mergeTwoModels (12, 6, count_only).size(), 2u);
+}
+
+TEST (ModelMergingStage, RefusesParametersOutOfRange)
+{
+  // A fraction outside [0, 1] is refused before any model is touched.
+  for (const float fraction : {-0.5f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
+    mid::DiscoveryParameters bad;
+    bad.merge_fraction = fraction;
+    EXPECT_EQ (mergeTwoModels (40, 14, bad).size(), 2u) << fraction;
+  }
 }

@@ -130,6 +130,7 @@ expectWhole (const Row& row)
 void
 expectNeighbourPairs (const Row& row)
 {
+  ASSERT_FALSE (row.copy_of.empty());
   const auto parts =
       mid::splitChainCluster (row.cluster, *row.triplets, *row.keypoints, kMaxRotation);
   ASSERT_EQ (parts.size(),
@@ -175,6 +176,33 @@ TEST (ChainSplitting, CutsTouchingCopiesBetweenThemNotInsideTheirPrint)
   }
   const Row row (4, Eigen::Vector3f (0.061f, 0.0f, 0.0f), 0.0f, false, object);
   expectNeighbourPairs (row);
+}
+
+TEST (ChainSplitting, LeavesLinksBetweenNonConsecutiveCopiesWhole)
+{
+  // Six touching boxes in a row of which only copies 0 -> 1 and 4 -> 5 are linked: the sources
+  // span four steps, but lie on copies 0 and 4 only. No shared keypoint shows a chain; the
+  // cluster may be two pairs of touching copies that stand apart, and is left whole.
+  const Row row (6, Eigen::Vector3f (0.061f, 0.0f, 0.0f));
+  mid::TripletCluster pairs;
+  pairs.transformation = row.cluster.transformation;
+  std::set<pcl::index_t> sources, targets;
+  for (std::size_t m = 0; m < row.cluster.triplets.size(); ++m) {
+    if (row.copy_of[m] != 0 && row.copy_of[m] != 4)
+      continue;
+    pairs.triplets.push_back (row.cluster.triplets[m]);
+    pairs.reversed.push_back (row.cluster.reversed[m]);
+    for (const auto& c : (*row.triplets)[row.cluster.triplets[m]].correspondences) {
+      sources.insert (row.cluster.reversed[m] ? c.index_match : c.index_query);
+      targets.insert (row.cluster.reversed[m] ? c.index_query : c.index_match);
+    }
+  }
+  pairs.source_indices.assign (sources.begin(), sources.end());
+  pairs.target_indices.assign (targets.begin(), targets.end());
+  const auto parts =
+      mid::splitChainCluster (pairs, *row.triplets, *row.keypoints, kMaxRotation);
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), pairs.triplets.size());
 }
 
 TEST (ChainSplitting, LeavesAPairOfCopiesWhole)

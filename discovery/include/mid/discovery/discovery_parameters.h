@@ -126,8 +126,9 @@ struct DiscoveryParameters
   /** \brief Compare the models with each other and merge those that are one object. */
   bool merge_models = true;
   /** \brief Evidence for merging two models (not in the paper): the RANSAC of one model in the
-    * other's landmarks must find min_merge_inliers inliers (>= 3), or merge_fraction (in
-    * [0, 1]) of the smaller model's landmarks, and never fewer than min_inliers. The paper
+    * other's landmarks must find the smaller of min_merge_inliers (>= 3) and merge_fraction (in
+    * [0, 1]) of the smaller model's landmark count in inliers (descriptor matches), and never
+    * fewer than min_inliers. The paper
     * compares models with the detection's 5 inliers; on the development frames five chance
     * matches then merged models of different products (a can row with a carton row), while
     * models of one product that share few landmarks are small. A fraction of 0 gives the

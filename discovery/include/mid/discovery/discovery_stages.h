@@ -28,7 +28,8 @@ discoverFromKeypoints (
   * \param[in] parameters the RANSAC and merge parameters
   * \param[in] frame the keypoints the models' instances refer to
   * \param[in,out] models the models; merged ones are removed
-  * \return false (with a PCL_ERROR) if the detector refuses a model
+  * \return false (with a PCL_ERROR, models unchanged) if a parameter is out of its range
+  * (validateDiscoveryParameters()) or the detector refuses a model
   */
 bool
 mergeMatchingModels (const DiscoveryParameters& parameters,

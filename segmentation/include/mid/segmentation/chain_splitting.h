@@ -25,15 +25,15 @@ namespace mid {
   * coordinate s(x) = (x - c) . d / |d|^2 (c: centroid of the source points); copies k and k + 1
   * are one unit apart. Copies cannot interpenetrate, so the keypoints of one copy fill less
   * than a unit of s. A cut c numbers the copies (point x lies on copy floor(s(x) - c)); a cut
-  * through the objects puts the sources, and the targets moved back by one unit, on more copies
-  * than a cut between copies, so the cut is the middle of the empty interval of s modulo 1 that
-  * puts them on the fewest copies, the largest such interval on a tie (the largest empty
-  * interval alone may lie inside the print of every copy when copies touch). When the span of
-  * the sources is the only evidence, they must lie on consecutive copies (two pairs of touching
-  * copies that stand apart at no multiple of the step are no row; the cluster is left whole).
-  * A triplet whose three source points lie on
-  * copy k and whose targets lie on copy k + 1 goes to part k; triplets that straddle copies are
-  * dropped.
+  * through the objects puts the sources, and the targets moved back by the stride, on more
+  * copies than a cut between copies, so the cut is the middle of the empty interval of s
+  * modulo 1 that puts them on the fewest copies, the largest such interval on a tie (the
+  * largest empty interval alone may lie inside the print of every copy when copies touch).
+  * When the span of the sources is the only evidence, they must lie on consecutive copies;
+  * otherwise (two pairs of touching copies far apart, or a row whose middle link is missing)
+  * the cluster is left whole, for the compound splitting. A triplet whose three source points
+  * lie on copy k and whose targets lie on copy k + 1 goes to part k; triplets that straddle
+  * copies are dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags and transformation)
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)

@@ -76,8 +76,9 @@ orientHalfTurnCluster (const TripletCluster& cluster,
   * \param[in] other a cluster whose point sets lie on two different copies (not `cluster`)
   * \param[in] triplets the triplet matches both clusters index
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
-  * \return positions in cluster.triplets of the two parts' members; none when every triplet
-  * spans both copies; a single part holding every triplet when neither of `cluster`'s point
+  * \return positions in cluster.triplets of the two parts' members; none when no triplet lies
+  * whole on one side (every triplet spans both copies, or has a keypoint missing from the
+  * straddling set); a single part holding every triplet when neither of `cluster`'s point
   * sets straddles `other`, or only one side gets triplets
   */
 std::vector<std::vector<std::size_t>>

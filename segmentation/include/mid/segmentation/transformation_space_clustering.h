@@ -169,8 +169,9 @@ public:
   /** \brief Make each cluster's two point sets lie on one copy each: a cluster whose pose is a
     * half turn swapping two touching copies is oriented one way (orientHalfTurnCluster()), and
     * a cluster with a point set spanning the two copies of another cluster is split in two
-    * (splitStraddlingCluster()); only for triplets within one frame, after the chains. Default
-    * true; false gives the paper's behaviour, whose models then cover two touching copies.
+    * (splitStraddlingCluster()), or removed when none of its triplets lies on one copy; only
+    * for triplets within one frame, after the chains. Default true; false gives the paper's
+    * behaviour, whose models then cover two touching copies.
     */
   ///@{
   void
