@@ -8,10 +8,12 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstddef>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 
 namespace mid {
@@ -22,10 +24,9 @@ template <std::size_t N>
 bool
 isOneOf (const std::string& argument, const char* const (&options)[N])
 {
-  for (const char* option : options)
-    if (argument == option)
-      return true;
-  return false;
+  return std::any_of (std::begin (options),
+                      std::end (options),
+                      [&argument] (const char* option) { return argument == option; });
 }
 
 /** \brief True if every argument is one of `switches`, or one of `value_options` followed by a
