@@ -189,10 +189,9 @@ splitStraddlers (const TripletMatches& triplets,
       for (std::size_t o = 0; o < clusters.size() && !again; ++o) {
         if (!splits_along (c, o))
           continue;
+        // Two parts, or one (untouched) or none (dropped below).
         const auto parts = split (c, o);
-        const bool untouched =
-            parts.size() == 1 && parts.front().size() == clusters[c].triplets.size();
-        if (parts.empty() || untouched)
+        if (parts.size() < 2)
           continue;
         TripletClusters pieces;
         for (const auto& members : parts)
