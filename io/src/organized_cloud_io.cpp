@@ -57,7 +57,28 @@ bigEndian (const std::vector<std::uint8_t>& data, std::size_t offset, std::size_
   return value;
 }
 
-/** Width x height from a PNG's IHDR chunk or a JPEG's start-of-frame marker; 0 if not found. */
+/** Offset of the next marker code at or after `at` in a JPEG, the way libjpeg resynchronises:
+  * bytes before a 0xFF are skipped ("extraneous bytes before marker"), so are fill bytes
+  * (repeated 0xFF) and stuffed zeros (0xFF 0x00). Returns data.size() if there is none.
+  */
+std::size_t
+nextJpegMarker (const std::vector<std::uint8_t>& data, std::size_t at)
+{
+  while (at + 1 < data.size()) {
+    if (data[at] != 0xFF || data[at + 1] == 0xFF) {
+      ++at;
+      continue;
+    }
+    if (data[at + 1] != 0x00)
+      return at + 1;
+    at += 2;
+  }
+  return data.size();
+}
+
+/** Width x height from a PNG's IHDR chunk or a JPEG's start-of-frame marker; 0 if the header
+  * is missing or cut short (neither decoder can decode such an image).
+  */
 std::uint64_t
 headerPixels (const std::vector<std::uint8_t>& data)
 {
@@ -65,21 +86,17 @@ headerPixels (const std::vector<std::uint8_t>& data)
     return data.size() < 24
                ? 0
                : std::uint64_t{bigEndian (data, 16, 4)} * bigEndian (data, 20, 4);
-  // JPEG: walk the marker segments up to the first SOFn (C0..CF except C4 DHT, C8, CC DAC).
-  std::size_t at = 2;
-  while (at + 4 <= data.size() && data[at] == 0xFF) {
-    const std::uint8_t marker = data[at + 1];
-    if (marker == 0xFF) { // a fill byte
-      ++at;
-      continue;
-    }
+  // JPEG: walk the marker segments up to the first SOFn (C0..CF except C4 DHT, C8, CC DAC),
+  // skipping what libjpeg skips between segments, or it would find a frame we do not see.
+  for (std::size_t at = nextJpegMarker (data, 2); at + 3 <= data.size();) {
+    const std::uint8_t marker = data[at];
     if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 &&
         marker != 0xCC)
-      return at + 9 > data.size() ? 0
-                                  : std::uint64_t{bigEndian (data, at + 5, 2)} *
-                                        bigEndian (data, at + 7, 2);
-    const bool standalone = marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7);
-    at += standalone ? 2 : 2 + bigEndian (data, at + 2, 2);
+      return at + 8 > data.size() ? 0
+                                  : std::uint64_t{bigEndian (data, at + 4, 2)} *
+                                        bigEndian (data, at + 6, 2);
+    const bool standalone = marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8);
+    at = nextJpegMarker (data, at + (standalone ? 1 : 1 + bigEndian (data, at + 1, 2)));
   }
   return 0;
 }
@@ -104,6 +121,10 @@ decodeImage (const std::vector<std::uint8_t>& data,
     return false;
   }
   const std::uint64_t pixels = headerPixels (data);
+  if (pixels == 0) {
+    problem = name + " has no image size in its header (corrupt or truncated)";
+    return false;
+  }
   if (pixels > kMaxImagePixels) {
     problem = name + " claims " + std::to_string (pixels) + " pixels, more than the " +
               std::to_string (kMaxImagePixels) + " an RGB-D frame may have";

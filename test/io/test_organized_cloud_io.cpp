@@ -7,6 +7,8 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -33,6 +35,9 @@ protected:
 };
 
 using Bytes = std::vector<std::uint8_t>;
+
+/** A JPEG's baseline start-of-frame marker. */
+const std::array<std::uint8_t, 2> kSof0{0xFF, 0xC0};
 
 Bytes
 encode (const char* extension, const cv::Mat& image)
@@ -303,6 +308,44 @@ TEST_F (OrganizedCloudIO, RefusesAnImageHeaderClaimingTooManyPixels)
   }
   Cloud cloud;
   EXPECT_FALSE (mid::io::decodeRGBD (encode (".png", color), huge, kIntrinsics, cloud));
+  expectCleared (cloud);
+}
+
+TEST_F (OrganizedCloudIO, FindsTheSizeOfAJpegWithStrayBytesBeforeItsFrameHeader)
+{
+  cv::Mat color, depth;
+  makeFrame (color, depth);
+  const Bytes clean = encode (".jpg", color);
+  Cloud expected;
+  ASSERT_TRUE (
+      mid::io::decodeRGBD (clean, encode (".png", depth), kIntrinsics, expected));
+  // libjpeg skips stray bytes between marker segments (with a warning) and decodes the image,
+  // so the size check must find the frame header behind them too (a fuzzer found an image of
+  // 65493 x 15104 pixels announced there, which OpenCV allocated: 3 GB).
+  const auto sof = std::search (clean.begin(), clean.end(), kSof0.begin(), kSof0.end());
+  ASSERT_NE (sof, clean.end());
+  Bytes stray (clean.begin(), sof);
+  stray.insert (stray.end(), {0x0A, 0x0A, 0xFF, 0x00, 0x0A});
+  stray.insert (stray.end(), sof, clean.end());
+  Cloud cloud;
+  ASSERT_TRUE (mid::io::decodeRGBD (stray, encode (".png", depth), kIntrinsics, cloud));
+  ASSERT_EQ (cloud.size(), expected.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    EXPECT_EQ (cloud[i].rgba, expected[i].rgba);
+  // The same header claiming 65535 x 65535 pixels is refused for its size, before anything is
+  // decoded or allocated (the error names the claim).
+  const std::size_t height_at = static_cast<std::size_t> (sof - clean.begin()) + 5 + 5;
+  for (std::size_t i = 0; i < 4; ++i)
+    stray[height_at + i] = 0xFF;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (
+      mid::io::decodeRGBD (stray, encode (".png", depth), kIntrinsics, cloud));
+  EXPECT_NE (testing::internal::GetCapturedStderr().find ("claims 4294836225 pixels"),
+             std::string::npos);
+  expectCleared (cloud);
+  // A JPEG cut before its frame header has no size: refused.
+  const Bytes cut (clean.begin(), sof);
+  EXPECT_FALSE (mid::io::decodeRGBD (cut, encode (".png", depth), kIntrinsics, cloud));
   expectCleared (cloud);
 }
 
