@@ -30,6 +30,18 @@ printSceneInputHelp ()
   print_info ("  -depth_scale S      metres per depth unit (default 0.001)\n");
 }
 
+OptionSpecs
+sceneInputOptions ()
+{
+  return {{"-rgb", 1},
+          {"-depth", 1},
+          {"-fx", 1},
+          {"-fy", 1},
+          {"-cx", 1},
+          {"-cy", 1},
+          {"-depth_scale", 1}};
+}
+
 bool
 parseSceneInput (int argc, char** argv, SceneInput& input)
 {
@@ -54,17 +66,17 @@ parseSceneInput (int argc, char** argv, SceneInput& input)
     print_error ("-rgb and -depth must be given together.\n");
     return false;
   }
-  const bool has_intrinsics =
-      parse_argument (argc, argv, "-fx", input.intrinsics.fx) >= 0 &&
-      parse_argument (argc, argv, "-fy", input.intrinsics.fy) >= 0 &&
-      parse_argument (argc, argv, "-cx", input.intrinsics.cx) >= 0 &&
-      parse_argument (argc, argv, "-cy", input.intrinsics.cy) >= 0;
-  if (!has_intrinsics) {
-    print_error ("-rgb/-depth input needs the intrinsics -fx -fy -cx -cy.\n");
-    return false;
-  }
-  parse_argument (argc, argv, "-depth_scale", input.intrinsics.depth_scale);
-  return true;
+  io::CameraIntrinsics& k = input.intrinsics;
+  for (const char* name : {"-fx", "-fy", "-cx", "-cy"})
+    if (pcl::console::find_argument (argc, argv, name) < 0) {
+      print_error ("-rgb/-depth input needs the intrinsics -fx -fy -cx -cy.\n");
+      return false;
+    }
+  return parseNumber (argc, argv, "-fx", k.fx) &&
+         parseNumber (argc, argv, "-fy", k.fy) &&
+         parseNumber (argc, argv, "-cx", k.cx) &&
+         parseNumber (argc, argv, "-cy", k.cy) &&
+         parseNumber (argc, argv, "-depth_scale", k.depth_scale);
 }
 
 bool

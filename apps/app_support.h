@@ -3,6 +3,8 @@
 // What the command-line apps share: reading the scene from the command line, printing a
 // result, and writing the result JSON, model files and pictures all-or-nothing.
 
+#include "strict_options.h"
+
 #include <mid/discovery/discovery_result.h>
 #include <mid/io/camera_intrinsics.h>
 #include <mid/io/staged_files.h>
@@ -36,6 +38,10 @@ struct SceneInput
 /** \brief Print the help lines of the scene options. */
 void
 printSceneInputHelp ();
+
+/** \brief The scene options (for onlyKnownArguments; SCENE.pcd is a file argument). */
+OptionSpecs
+sceneInputOptions ();
 
 /** \brief Read the scene options; false after a one-line error if they are unusable. */
 bool

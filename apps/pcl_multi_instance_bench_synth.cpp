@@ -56,16 +56,17 @@ struct Options
   std::vector<BenchmarkScenario> scenario_list;
 };
 
-const char* const kValueOptions[] = {"-out_dir",
-                                     "-texture_dir",
-                                     "-scenarios",
-                                     "-sensor",
-                                     "-preview",
-                                     "-preview_scale",
-                                     "-seed",
-                                     "-frames",
-                                     "-supersampling"};
-const char* const kSwitches[] = {"-h", "--help"};
+const mid::apps::OptionSpecs kOptions{{"-h", 0},
+                                      {"--help", 0},
+                                      {"-out_dir", 1},
+                                      {"-texture_dir", 1},
+                                      {"-scenarios", 1},
+                                      {"-sensor", 1},
+                                      {"-preview", 1},
+                                      {"-preview_scale", 1},
+                                      {"-seed", 1},
+                                      {"-frames", 1},
+                                      {"-supersampling", 1}};
 
 void
 printHelp (const char* program)
@@ -138,7 +139,7 @@ parseScenarios (Options& options)
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
-  if (!mid::apps::onlyKnownArguments (argc, argv, kSwitches, kValueOptions))
+  if (!mid::apps::onlyKnownArguments (argc, argv, kOptions))
     return false;
   using pcl::console::parse_argument;
   long seed = options.seed, frames = options.frames,

@@ -73,6 +73,16 @@ printHelp (const char* program)
   line ("-seed S", "seed of the random draws", d.seed);
 }
 
+/** The options of this app besides the scene and picture options, with their value counts. */
+const mid::apps::OptionSpecs kOptions{{"-h", 0},
+                                      {"-json", 1},
+                                      {"-max_desc_dist", 1},
+                                      {"-inlier", 1},
+                                      {"-min_inliers", 1},
+                                      {"-min_ratio", 1},
+                                      {"-iterations", 1},
+                                      {"-seed", 1}};
+
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
@@ -88,16 +98,23 @@ parseOptions (int argc, char** argv, Options& options)
     print_error ("Give the model file MODEL.json first.\n");
     return false;
   }
-  if (!mid::apps::parseSceneInput (argc, argv, options.scene) ||
+  mid::apps::OptionSpecs known = kOptions;
+  for (const auto& more :
+       {mid::apps::sceneInputOptions(), mid::apps::VisualOutputs::options()})
+    known.insert (known.end(), more.begin(), more.end());
+  if (!mid::apps::onlyKnownArguments (argc, argv, known, {".json", ".pcd"}) ||
+      !mid::apps::parseSceneInput (argc, argv, options.scene) ||
       !options.pictures.parse (argc, argv))
     return false;
   parse_argument (argc, argv, "-json", options.json_path);
-  parse_argument (argc, argv, "-max_desc_dist", options.max_descriptor_distance);
-  parse_argument (argc, argv, "-inlier", options.inlier_threshold);
-  parse_argument (argc, argv, "-min_inliers", options.min_inliers);
-  parse_argument (argc, argv, "-min_ratio", options.min_inlier_ratio);
-  parse_argument (argc, argv, "-iterations", options.iterations);
-  parse_argument (argc, argv, "-seed", options.seed);
+  using mid::apps::parseNumber;
+  if (!parseNumber (argc, argv, "-max_desc_dist", options.max_descriptor_distance) ||
+      !parseNumber (argc, argv, "-inlier", options.inlier_threshold) ||
+      !parseNumber (argc, argv, "-min_inliers", options.min_inliers) ||
+      !parseNumber (argc, argv, "-min_ratio", options.min_inlier_ratio) ||
+      !parseNumber (argc, argv, "-iterations", options.iterations) ||
+      !parseNumber (argc, argv, "-seed", options.seed))
+    return false;
   if (options.min_inliers < 3) {
     print_error ("Invalid parameter: min_inliers is %d, must be >= 3.\n",
                  options.min_inliers);

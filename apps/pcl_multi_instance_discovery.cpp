@@ -140,52 +140,108 @@ printHelp (const char* program)
         static_cast<double> (d.lrf_radius));
 }
 
+/** The options of this app besides the scene and picture options, with their value counts. */
+const mid::apps::OptionSpecs kOptions{{"-h", 0},
+                                      {"--help", 0},
+                                      {"-mutual", 0},
+                                      {"-keep_overlaps", 0},
+                                      {"-keep_rows", 0},
+                                      {"-keep_compounds", 0},
+                                      {"-json", 1},
+                                      {"-models", 1},
+                                      {"-max_keypoints", 1},
+                                      {"-contrast", 1},
+                                      {"-normal_radius", 1},
+                                      {"-max_desc_dist", 1},
+                                      {"-min_kp_dist", 1},
+                                      {"-ratio", 1},
+                                      {"-knn", 1},
+                                      {"-ppf_dist", 1},
+                                      {"-ppf_angle", 1},
+                                      {"-min_edge", 1},
+                                      {"-max_edge", 1},
+                                      {"-min_angle", 1},
+                                      {"-overlap", 1},
+                                      {"-triplets_per_kp", 1},
+                                      {"-eps", 1},
+                                      {"-min_cluster", 1},
+                                      {"-inlier", 1},
+                                      {"-min_inliers", 1},
+                                      {"-merge_inliers", 1},
+                                      {"-merge_fraction", 1},
+                                      {"-min_ratio", 1},
+                                      {"-seed", 1},
+                                      {"-grouping", 1},
+                                      {"-gc_size", 1},
+                                      {"-gc_threshold", 1},
+                                      {"-hough_bin", 1},
+                                      {"-hough_threshold", 1},
+                                      {"-lrf_radius", 1}};
+
+/** Read an angle option given in degrees into `radians`; false after a message if invalid. */
+bool
+parseDegrees (int argc, char** argv, const char* name, float& radians)
+{
+  float degrees = 0.0f;
+  if (pcl::console::find_argument (argc, argv, name) < 0)
+    return true;
+  if (!mid::apps::parseNumber (argc, argv, name, degrees))
+    return false;
+  radians = degrees * static_cast<float> (M_PI / 180.0);
+  return true;
+}
+
 /** Parse the command line; false (after a one-line error) if it is unusable. */
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
+  using mid::apps::parseNumber;
   using pcl::console::parse_argument;
-  if (!mid::apps::parseSceneInput (argc, argv, options.scene) ||
+  mid::apps::OptionSpecs known = kOptions;
+  for (const auto& more :
+       {mid::apps::sceneInputOptions(), mid::apps::VisualOutputs::options()})
+    known.insert (known.end(), more.begin(), more.end());
+  if (!mid::apps::onlyKnownArguments (argc, argv, known, {".pcd"}) ||
+      !mid::apps::parseSceneInput (argc, argv, options.scene) ||
       !options.pictures.parse (argc, argv))
     return false;
   mid::DiscoveryParameters& p = options.parameters;
   parse_argument (argc, argv, "-json", options.json_path);
   parse_argument (argc, argv, "-models", options.model_prefix);
-  parse_argument (argc, argv, "-max_keypoints", p.max_keypoints);
-  parse_argument (argc, argv, "-contrast", p.contrast_threshold);
-  parse_argument (argc, argv, "-normal_radius", p.normal_radius);
-  parse_argument (argc, argv, "-max_desc_dist", p.max_descriptor_distance);
-  parse_argument (argc, argv, "-min_kp_dist", p.min_keypoint_distance);
-  parse_argument (argc, argv, "-ratio", p.max_distance_ratio);
   p.mutual_check = pcl::console::find_switch (argc, argv, "-mutual");
-  parse_argument (argc, argv, "-knn", p.matches_per_keypoint);
   p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
   p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
   p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
-  parse_argument (argc, argv, "-ppf_dist", p.ppf_distance);
-  float degrees = 0.0f;
-  if (parse_argument (argc, argv, "-ppf_angle", degrees) >= 0)
-    p.ppf_angle = degrees * static_cast<float> (M_PI / 180.0);
-  parse_argument (argc, argv, "-min_edge", p.min_edge_length);
-  parse_argument (argc, argv, "-max_edge", p.max_edge_length);
-  if (parse_argument (argc, argv, "-min_angle", degrees) >= 0)
-    p.min_triangle_angle = degrees * static_cast<float> (M_PI / 180.0);
-  parse_argument (argc, argv, "-overlap", p.overlap_distance);
-  parse_argument (argc, argv, "-triplets_per_kp", p.triplets_per_keypoint);
-  parse_argument (argc, argv, "-eps", p.cluster_distance);
-  int count = 0;
-  if (parse_argument (argc, argv, "-min_cluster", count) >= 0)
-    p.min_cluster_size = count < 0 ? 0 : static_cast<std::size_t> (count);
-  parse_argument (argc, argv, "-inlier", p.inlier_threshold);
-  if (parse_argument (argc, argv, "-min_inliers", count) >= 0)
-    p.min_inliers = count < 0 ? 0 : static_cast<std::size_t> (count);
-  if (parse_argument (argc, argv, "-merge_inliers", count) >= 0)
-    p.min_merge_inliers = count < 0 ? 0 : static_cast<std::size_t> (count);
-  parse_argument (argc, argv, "-merge_fraction", p.merge_fraction);
-  parse_argument (argc, argv, "-min_ratio", p.min_inlier_ratio);
-  unsigned seed = 0;
-  if (parse_argument (argc, argv, "-seed", seed) >= 0)
-    p.seed = seed;
+  const bool numbers_valid =
+      parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
+      parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
+      parseNumber (argc, argv, "-normal_radius", p.normal_radius) &&
+      parseNumber (argc, argv, "-max_desc_dist", p.max_descriptor_distance) &&
+      parseNumber (argc, argv, "-min_kp_dist", p.min_keypoint_distance) &&
+      parseNumber (argc, argv, "-ratio", p.max_distance_ratio) &&
+      parseNumber (argc, argv, "-knn", p.matches_per_keypoint) &&
+      parseNumber (argc, argv, "-ppf_dist", p.ppf_distance) &&
+      parseDegrees (argc, argv, "-ppf_angle", p.ppf_angle) &&
+      parseNumber (argc, argv, "-min_edge", p.min_edge_length) &&
+      parseNumber (argc, argv, "-max_edge", p.max_edge_length) &&
+      parseDegrees (argc, argv, "-min_angle", p.min_triangle_angle) &&
+      parseNumber (argc, argv, "-overlap", p.overlap_distance) &&
+      parseNumber (argc, argv, "-triplets_per_kp", p.triplets_per_keypoint) &&
+      parseNumber (argc, argv, "-eps", p.cluster_distance) &&
+      parseNumber (argc, argv, "-min_cluster", p.min_cluster_size) &&
+      parseNumber (argc, argv, "-inlier", p.inlier_threshold) &&
+      parseNumber (argc, argv, "-min_inliers", p.min_inliers) &&
+      parseNumber (argc, argv, "-merge_inliers", p.min_merge_inliers) &&
+      parseNumber (argc, argv, "-merge_fraction", p.merge_fraction) &&
+      parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
+      parseNumber (argc, argv, "-seed", p.seed) &&
+      parseNumber (argc, argv, "-gc_size", p.gc_size) &&
+      parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&
+      parseNumber (argc, argv, "-hough_bin", p.hough_bin_size) &&
+      parseNumber (argc, argv, "-hough_threshold", p.hough_threshold) &&
+      parseNumber (argc, argv, "-lrf_radius", p.lrf_radius);
+  if (!numbers_valid)
+    return false;
   std::string grouping = "triplets";
   parse_argument (argc, argv, "-grouping", grouping);
   if (grouping == "gcg")
@@ -198,11 +254,6 @@ parseOptions (int argc, char** argv, Options& options)
         grouping.c_str());
     return false;
   }
-  parse_argument (argc, argv, "-gc_size", p.gc_size);
-  parse_argument (argc, argv, "-gc_threshold", p.gc_threshold);
-  parse_argument (argc, argv, "-hough_bin", p.hough_bin_size);
-  parse_argument (argc, argv, "-hough_threshold", p.hough_threshold);
-  parse_argument (argc, argv, "-lrf_radius", p.lrf_radius);
   std::string problem;
   if (!mid::validateDiscoveryParameters (p, problem)) {
     print_error ("Invalid parameter: %s.\n", problem.c_str());

@@ -1,6 +1,8 @@
 // pcl_multi_instance_eval: score discovery results against BOP ground truth with the rules of
 // Abbeloos et al. (3DV 2017) and print a Table-2-style report per scenario and in total.
 
+#include "strict_options.h"
+
 #include <mid/evaluation/benchmark_report.h>
 #include <mid/evaluation/detection_result.h>
 #include <mid/evaluation/ground_truth.h>
@@ -172,7 +174,8 @@ main (int argc, char** argv)
   std::string report_path, names_list;
   double min_inside = 0.9;
   pcl::console::parse_argument (argc, argv, "-report", report_path);
-  pcl::console::parse_argument (argc, argv, "-min_inside", min_inside);
+  if (!mid::apps::parseNumber (argc, argv, "-min_inside", min_inside))
+    return 1;
   pcl::console::parse_argument (argc, argv, "-names", names_list);
   const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
   if (!(min_inside > 0.0 && min_inside <= 1.0)) {

@@ -42,15 +42,16 @@ struct Options
   int supersampling = 3;
 };
 
-/** Options that take a value, and switches. */
-const char* const kValueOptions[] = {"-seed",
-                                     "-instances",
-                                     "-distractors",
-                                     "-texture_dir",
-                                     "-out_dir",
-                                     "-sensor",
-                                     "-supersampling"};
-const char* const kSwitches[] = {"-h", "--help"};
+/** The options of the command line, each with the number of values it takes. */
+const mid::apps::OptionSpecs kOptions{{"-h", 0},
+                                      {"--help", 0},
+                                      {"-seed", 1},
+                                      {"-instances", 1},
+                                      {"-distractors", 1},
+                                      {"-texture_dir", 1},
+                                      {"-out_dir", 1},
+                                      {"-sensor", 1},
+                                      {"-supersampling", 1}};
 
 void
 printHelp (const char* program)
@@ -88,7 +89,7 @@ printHelp (const char* program)
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
-  if (!mid::apps::onlyKnownArguments (argc, argv, kSwitches, kValueOptions))
+  if (!mid::apps::onlyKnownArguments (argc, argv, kOptions))
     return false;
   long seed = options.scene.seed, instances = options.scene.instances,
        distractors = options.scene.distractors, supersampling = options.supersampling;

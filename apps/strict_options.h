@@ -1,9 +1,8 @@
 #pragma once
 
-// Strict command-line checking for the apps that do not link mid_app_support (the synthesizers):
-// unknown arguments, options without a value, and integers with trailing junk are refused with
-// a one-line message instead of being ignored or read as 0 (pcl::console::parse_argument alone
-// does either). Header-only, used by one translation unit per app.
+// Strict command-line checking for every app: unknown arguments, options without their values,
+// and numbers with trailing junk or out of range are refused with a one-line message instead of
+// being ignored or read as 0 (pcl::console::parse_argument alone does either). Header-only.
 
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
@@ -11,47 +10,76 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
-#include <iterator>
+#include <limits>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace mid {
 namespace apps {
 
-/** \brief True if `argument` is one of `options`. */
-template <std::size_t N>
-bool
-isOneOf (const std::string& argument, const char* const (&options)[N])
+/** \brief One command-line option: its name and how many values follow it (0: a switch). */
+struct OptionSpec
 {
-  return std::any_of (std::begin (options),
-                      std::end (options),
-                      [&argument] (const char* option) { return argument == option; });
-}
+  const char* name;
+  int values;
+};
 
-/** \brief True if every argument is one of `switches`, or one of `value_options` followed by a
-  * value; otherwise prints which argument is wrong and returns false.
+using OptionSpecs = std::vector<OptionSpec>;
+
+/** \brief True if every argument is one of `options` followed by its values, or a file argument
+  * (not starting with '-') whose name ends in one of `file_endings`; otherwise prints which
+  * argument is wrong and returns false. Which files an app needs is for the app to check.
   */
-template <std::size_t S, std::size_t V>
-bool
+inline bool
 onlyKnownArguments (int argc,
                     char** argv,
-                    const char* const (&switches)[S],
-                    const char* const (&value_options)[V])
+                    const OptionSpecs& options,
+                    const std::vector<std::string>& file_endings = {})
 {
+  const auto endsWith = [] (const std::string& text, const std::string& ending) {
+    return text.size() > ending.size() &&
+           text.compare (text.size() - ending.size(), ending.size(), ending) == 0;
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
-    if (isOneOf (argument, switches))
+    const auto option =
+        std::find_if (options.begin(),
+                      options.end(),
+                      [&argument] (const OptionSpec& o) { return argument == o.name; });
+    if (option == options.end()) {
+      const bool file =
+          argument[0] != '-' && std::any_of (file_endings.begin(),
+                                             file_endings.end(),
+                                             [&] (const std::string& ending) {
+                                               return endsWith (argument, ending);
+                                             });
+      if (!file) {
+        pcl::console::print_error ("Unknown argument '%s' (see -h).\n", argv[i]);
+        return false;
+      }
       continue;
-    if (!isOneOf (argument, value_options)) {
-      pcl::console::print_error ("Unknown argument '%s' (see -h).\n", argv[i]);
+    }
+    const bool values_given =
+        i + option->values < argc &&
+        std::none_of (
+            argv + i + 1, argv + i + 1 + option->values, [&options] (const char* v) {
+              return std::any_of (
+                  options.begin(), options.end(), [v] (const OptionSpec& o) {
+                    return std::string (v) == o.name;
+                  });
+            });
+    if (!values_given) {
+      pcl::console::print_error ("Option %s needs %d value%s.\n",
+                                 argv[i],
+                                 option->values,
+                                 option->values > 1 ? "s" : "");
       return false;
     }
-    if (i + 1 >= argc) {
-      pcl::console::print_error ("Option %s needs a value.\n", argv[i]);
-      return false;
-    }
-    ++i; // the value
+    i += option->values;
   }
   return true;
 }
@@ -86,6 +114,75 @@ parseIntegerOption (
                              low,
                              high,
                              text.c_str());
+  return false;
+}
+
+/** \brief The range of an integral T that toInteger can read. */
+template <typename T>
+constexpr long
+lowestInteger ()
+{
+  return static_cast<long> (std::numeric_limits<T>::lowest());
+}
+
+template <typename T>
+constexpr long
+highestInteger ()
+{
+  return std::numeric_limits<T>::max() >
+                 static_cast<unsigned long> (std::numeric_limits<long>::max())
+             ? std::numeric_limits<long>::max()
+             : static_cast<long> (std::numeric_limits<T>::max());
+}
+
+/** \brief Strict conversion of a whole string to a number of type T: an integer in T's range
+  * for an integral T, a finite number for a floating-point T.
+  */
+template <typename T>
+bool
+toNumber (const std::string& text, T& value)
+{
+  if constexpr (std::is_integral_v<T>) {
+    long integer = 0;
+    if (!toInteger (text, lowestInteger<T>(), highestInteger<T>(), integer))
+      return false;
+    value = static_cast<T> (integer);
+    return true;
+  }
+  else {
+    if (text.empty() || std::isspace (static_cast<unsigned char> (text[0])))
+      return false;
+    errno = 0;
+    char* end = nullptr;
+    const double number = std::strtod (text.c_str(), &end);
+    if (errno != 0 || *end != '\0' || !std::isfinite (number) ||
+        std::abs (number) > static_cast<double> (std::numeric_limits<T>::max()))
+      return false;
+    value = static_cast<T> (number);
+    return true;
+  }
+}
+
+/** \brief Read number option `name` into `value` if given (pcl::console::parse_argument, but
+  * strict); false after a message naming the option if its value is not a number of type T.
+  */
+template <typename T>
+bool
+parseNumber (int argc, char** argv, const char* name, T& value)
+{
+  std::string text;
+  if (pcl::console::parse_argument (argc, argv, name, text) < 0)
+    return true;
+  if (toNumber (text, value))
+    return true;
+  if constexpr (std::is_integral_v<T>)
+    pcl::console::print_error ("%s must be an integer in [%ld, %ld], got '%s'.\n",
+                               name,
+                               lowestInteger<T>(),
+                               highestInteger<T>(),
+                               text.c_str());
+  else
+    pcl::console::print_error ("%s must be a number, got '%s'.\n", name, text.c_str());
   return false;
 }
 

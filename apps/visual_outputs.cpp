@@ -81,6 +81,17 @@ VisualOutputs::printHelp()
               "(needs a display)\n");
 }
 
+OptionSpecs
+VisualOutputs::options()
+{
+  return {{"-screenshot", 1},
+          {"-overlay", 1},
+          {"-size", 2},
+          {"-viewpoint", 3},
+          {"-view", 0},
+          {"-draw_matches", 0}};
+}
+
 bool
 VisualOutputs::parse (int argc, char** argv)
 {

@@ -21,6 +21,10 @@ public:
   static void
   printHelp ();
 
+  /** \brief The picture options (for onlyKnownArguments). */
+  static OptionSpecs
+  options ();
+
   /** \brief Read the picture options; false after a one-line error if they are unusable, or if
     * a screenshot or a window is asked for and there is no X display.
     */

@@ -93,3 +93,23 @@ TEST (DetectApp, RefusesMissingTruncatedOrForeignModels)
       << R"({"format": "mid-object-model", "version": 7})";
   expect_refused (folder.file ("other.json"), "version");
 }
+
+TEST (DetectApp, RefusesUnknownArgumentsAndMalformedNumbers)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto scene = mid::test::makeTwoCopiesScene();
+  std::string command = detectApp() + " " + folder.file ("model_0.json");
+  command += " " + discoverModel (folder, scene);
+  for (const auto& [extra, message] :
+       {std::pair<std::string, std::string>{" -iteratoins 10", "Unknown argument"},
+        {" -iterations 1e3", "-iterations must be an integer"},
+        {" -inlier 5mm", "-inlier must be a number, got '5mm'"}}) {
+    SCOPED_TRACE (extra);
+    const auto result = mid::test::runCommand (command + extra);
+    EXPECT_FALSE (result.crashed);
+    EXPECT_NE (result.exit_code, 0);
+    EXPECT_NE (result.output.find (message), std::string::npos) << result.output;
+  }
+  // The same command without the bad option runs.
+  EXPECT_EQ (mid::test::runCommand (command).exit_code, 0);
+}

@@ -171,6 +171,32 @@ TEST_F (DiscoveryApp, RefusesBadArguments)
   EXPECT_NE (usage.output.find ("Usage"), std::string::npos);
 }
 
+TEST_F (DiscoveryApp, RefusesUnknownArgumentsAndMalformedNumbers)
+{
+  const auto scene = mid::test::makeTwoCopiesScene();
+  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (path ("scene.pcd"), *scene.cloud),
+             0);
+  const std::string pcd = path ("scene.pcd");
+  // A misspelt option or a stray file would otherwise be ignored, and run with the defaults.
+  expectRefused (pcd + " -merge_fractoin 0.5", "Unknown argument '-merge_fractoin'");
+  expectRefused (pcd + " notes.txt", "Unknown argument 'notes.txt'");
+  expectRefused (pcd + " -json", "-json needs 1 value");
+  expectRefused (pcd + " -size 640", "-size needs 2 values");
+  // pcl::console::parse_argument reads these as 0 or as their leading digits.
+  expectRefused (pcd + " -merge_fraction abc",
+                 "-merge_fraction must be a number, got 'abc'");
+  expectRefused (pcd + " -contrast 0.04x", "-contrast must be a number");
+  expectRefused (pcd + " -ppf_angle nan", "-ppf_angle must be a number");
+  expectRefused (pcd + " -seed 1.5", "-seed must be an integer");
+  expectRefused (pcd + " -seed -1", "-seed must be an integer in [0, 4294967295]");
+  expectRefused (pcd + " -min_cluster -3", "-min_cluster must be an integer");
+  expectRefused (pcd + " -min_inliers -1", "-min_inliers must be an integer");
+  cv::Mat color, depth;
+  makeImages (color, depth);
+  expectRefused (writePair (color, depth) + " -fx 525px -fy 525 -cx 319.5 -cy 239.5",
+                 "-fx must be a number, got '525px'");
+}
+
 TEST_F (DiscoveryApp, RefusesATruncatedBinaryPcd)
 {
   const auto scene = mid::test::makeTwoCopiesScene();
@@ -258,9 +284,7 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-eps 0",
                              "-eps -1",
                              "-min_cluster 0",
-                             "-min_cluster -3",
                              "-inlier 0",
-                             "-min_inliers -1",
                              "-merge_inliers 2",
                              "-merge_fraction 1.5",
                              "-merge_fraction -0.1",

@@ -80,9 +80,9 @@ TEST_F (DiscoveryAppPictures, RefusesUnusablePictureOptions)
   expectRefused ("-overlay " + folder_.file ("missing/overlay.png"),
                  "missing or not writable");
   expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 640",
-                 "-size needs 2 numbers");
+                 "-size needs 2 values");
   expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 0 480",
                  "Invalid parameter");
   expectRefused ("-overlay " + folder_.file ("overlay.png") + " -viewpoint 1 2",
-                 "-viewpoint needs 3");
+                 "-viewpoint needs 3 values");
 }
