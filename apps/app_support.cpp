@@ -46,10 +46,11 @@ bool
 parseSceneInput (int argc, char** argv, SceneInput& input)
 {
   using pcl::console::parse_argument;
-  // A .pcd argument that is not the value of an option (e.g. of -models).
+  // A .pcd argument that is not the value of an output option (-models, -json).
   std::vector<int> pcd_indices;
   for (const int i : pcl::console::parse_file_extension_argument (argc, argv, ".pcd"))
-    if (i == 0 || argv[i - 1][0] != '-')
+    if (i == 0 || (std::strcmp (argv[i - 1], "-models") != 0 &&
+                   std::strcmp (argv[i - 1], "-json") != 0))
       pcd_indices.push_back (i);
   parse_argument (argc, argv, "-rgb", input.color_path);
   parse_argument (argc, argv, "-depth", input.depth_path);

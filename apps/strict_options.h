@@ -40,9 +40,16 @@ onlyKnownArguments (int argc,
                     const OptionSpecs& options,
                     const std::vector<std::string>& file_endings = {})
 {
+  // Case-insensitive, as pcl::console::parse_file_extension_argument (SCENE.PCD is a scene).
   const auto endsWith = [] (const std::string& text, const std::string& ending) {
     return text.size() > ending.size() &&
-           text.compare (text.size() - ending.size(), ending.size(), ending) == 0;
+           std::equal (ending.begin(),
+                       ending.end(),
+                       text.end() - static_cast<std::ptrdiff_t> (ending.size()),
+                       [] (char a, char b) {
+                         return std::tolower (static_cast<unsigned char> (a)) ==
+                                std::tolower (static_cast<unsigned char> (b));
+                       });
   };
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];

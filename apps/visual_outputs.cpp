@@ -7,7 +7,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 
-#include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -34,14 +34,11 @@ parseNumbers (int argc,
   if (index < 0)
     return 0;
   values.clear();
-  for (int i = index + 1; i < argc && values.size() < count; ++i) {
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod (argv[i], &end);
-    if (end == argv[i] || *end != '\0' || errno != 0)
-      break;
+  double value = 0.0;
+  for (int i = index + 1;
+       i < argc && values.size() < count && toNumber (std::string (argv[i]), value);
+       ++i)
     values.push_back (value);
-  }
   if (values.size() != count) {
     print_error ("%s needs %zu numbers.\n", option, count);
     return -1;
@@ -111,9 +108,11 @@ VisualOutputs::parse (int argc, char** argv)
   if (size > 0) {
     constexpr double kSmallest = 16.0, kLargest = 8192.0;
     if (!(values[0] >= kSmallest && values[0] <= kLargest && values[1] >= kSmallest &&
-          values[1] <= kLargest)) {
+          values[1] <= kLargest && values[0] == std::floor (values[0]) &&
+          values[1] == std::floor (values[1]))) {
       print_error (
-          "Invalid parameter: -size %g %g, each must be in [16, 8192] pixels.\n",
+          "Invalid parameter: -size %g %g, each must be a whole number in [16, 8192] "
+          "pixels.\n",
           values[0],
           values[1]);
       return false;

@@ -195,6 +195,10 @@ TEST_F (DiscoveryApp, RefusesUnknownArgumentsAndMalformedNumbers)
   makeImages (color, depth);
   expectRefused (writePair (color, depth) + " -fx 525px -fy 525 -cx 319.5 -cy 239.5",
                  "-fx must be a number, got '525px'");
+  // Still a scene: an upper-case name, after a switch.
+  fs::copy_file (pcd, path ("SCENE.PCD"));
+  const auto upper = run ("-keep_rows " + path ("SCENE.PCD"));
+  EXPECT_EQ (upper.exit_code, 0) << upper.output;
 }
 
 TEST_F (DiscoveryApp, RefusesATruncatedBinaryPcd)

@@ -85,4 +85,8 @@ TEST_F (DiscoveryAppPictures, RefusesUnusablePictureOptions)
                  "Invalid parameter");
   expectRefused ("-overlay " + folder_.file ("overlay.png") + " -viewpoint 1 2",
                  "-viewpoint needs 3 values");
+  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -size 640.5 480",
+                 "whole number");
+  expectRefused ("-overlay " + folder_.file ("overlay.png") + " -viewpoint nan 0 0",
+                 "-viewpoint needs 3 numbers");
 }
