@@ -150,10 +150,14 @@ halfTurnSides (const TripletCluster& cluster,
     }
   }
   std::map<pcl::index_t, int> sides;
-  // Without an anchor that the plane leaves whole, the copies may be the two halves of one
-  // symmetric object, or the plane may cross both copies: leave the cluster as it is.
-  if (anchor_links == 0 || static_cast<double> (anchors_cut) >
-                               kMaxAnchorCut * static_cast<double> (anchor_links))
+  // A plane that cuts anchors may cross both copies, or the copies may be the two halves of
+  // one symmetric object: leave the cluster as it is. Without anchors, only a plane through
+  // an empty gap between the copies is trusted.
+  const bool confirmed = anchor_links > 0
+                             ? static_cast<double> (anchors_cut) <=
+                                   kMaxAnchorCut * static_cast<double> (anchor_links)
+                             : fewest_cut == 0;
+  if (!confirmed)
     return sides;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const float d = offsets[i].dot (normal);

@@ -114,6 +114,28 @@ copiesOf (const pcl::Indices& points)
   return copies;
 }
 
+/** The copies the sources and the targets of a half-turn cluster's triplets lie on once
+  * oriented (dropped triplets left out).
+  */
+std::pair<std::set<int>, std::set<int>>
+orientedCopies (const Copies& scene,
+                const mid::TripletCluster& cluster,
+                const std::vector<mid::TripletOrientation>& orientation)
+{
+  std::pair<std::set<int>, std::set<int>> copies;
+  for (std::size_t m = 0; m < orientation.size(); ++m) {
+    if (orientation[m] == mid::TripletOrientation::drop)
+      continue;
+    const bool reversed =
+        cluster.reversed[m] != (orientation[m] == mid::TripletOrientation::reverse);
+    for (const auto& c : (*scene.triplets)[cluster.triplets[m]].correspondences) {
+      copies.first.insert (Copies::copyOf (reversed ? c.index_match : c.index_query));
+      copies.second.insert (Copies::copyOf (reversed ? c.index_query : c.index_match));
+    }
+  }
+  return copies;
+}
+
 /** The copies each cluster's source and target sets lie on. */
 using Links = std::set<std::pair<std::set<int>, std::set<int>>>;
 
@@ -190,20 +212,37 @@ TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
   const auto orientation = mid::orientHalfTurnCluster (
       half_turn, {anchor.source_indices}, *scene.triplets, *scene.keypoints);
   ASSERT_EQ (orientation.size(), half_turn.triplets.size());
-  std::set<int> source_copies, target_copies;
-  for (std::size_t m = 0; m < orientation.size(); ++m) {
-    if (m >= straight) {
-      EXPECT_EQ (orientation[m], mid::TripletOrientation::drop) << m;
-      continue;
-    }
-    ASSERT_NE (orientation[m], mid::TripletOrientation::drop) << m;
-    const bool reversed =
-        half_turn.reversed[m] != (orientation[m] == mid::TripletOrientation::reverse);
-    for (const auto& c : (*scene.triplets)[half_turn.triplets[m]].correspondences) {
-      source_copies.insert (Copies::copyOf (reversed ? c.index_match : c.index_query));
-      target_copies.insert (Copies::copyOf (reversed ? c.index_query : c.index_match));
-    }
-  }
+  for (std::size_t m = 0; m < orientation.size(); ++m)
+    EXPECT_EQ (orientation[m] == mid::TripletOrientation::drop, m >= straight) << m;
+  const auto [source_copies, target_copies] =
+      orientedCopies (scene, half_turn, orientation);
+  EXPECT_EQ (source_copies.size(), 1u);
+  EXPECT_EQ (target_copies.size(), 1u);
+  EXPECT_NE (source_copies, target_copies);
+}
+
+TEST (CompoundSplitting, OrientsAHalfTurnBetweenCopiesApartWithoutAnAnchor)
+{
+  // Copy 1 is copy 0 turned about a vertical axis 10 cm beside it: the copies lie 20 cm
+  // apart, no keypoint of one is a neighbour of the other, and the plane between them cuts
+  // no link. No third copy is needed to tell them apart.
+  Copies scene;
+  scene.add (kFirst);
+  scene.add (mid::test::rigidMotion (Eigen::Vector3f (-0.2f, 0.0f, 0.0f)) * kHalfTurn);
+  mid::TripletCluster half_turn;
+  scene.link (0, 1, half_turn);
+  scene.link (1, 0, half_turn);
+  scene.finish (half_turn);
+  ASSERT_EQ (copiesOf (half_turn.source_indices), (std::set<int>{0, 1}));
+
+  const auto orientation =
+      mid::orientHalfTurnCluster (half_turn, {}, *scene.triplets, *scene.keypoints);
+  ASSERT_EQ (orientation.size(), half_turn.triplets.size());
+  EXPECT_EQ (std::count (
+                 orientation.begin(), orientation.end(), mid::TripletOrientation::drop),
+             0);
+  const auto [source_copies, target_copies] =
+      orientedCopies (scene, half_turn, orientation);
   EXPECT_EQ (source_copies.size(), 1u);
   EXPECT_EQ (target_copies.size(), 1u);
   EXPECT_NE (source_copies, target_copies);

@@ -36,10 +36,14 @@ enum class TripletOrientation {
   * them). The plane kept, among 180 through the axis, cuts the fewest links between keypoints
   * that lie on one copy: keypoints closer than 20 mm (one surface, weight 1), and keypoints
   * within 5 mm of one anchor set (a point set of another cluster, which lies on a single copy
-  * and so tells where a copy ends; weight 4). The cluster is oriented only if an anchor
-  * confirms the plane: some anchor links exist and the plane cuts at most 10 % of them. Else
-  * (no third copy matched to one of the two, or the two "copies" are the halves of one object
-  * that looks the same after a half turn, which every anchor spans) it is left as it is.
+  * and so tells where a copy ends; weight 4). The cluster is oriented only if the plane is
+  * confirmed: when anchor links exist, it cuts at most 10 % of them; when none exist (no third
+  * copy matched to one of the two), it cuts no link at all, so the copies lie apart, with
+  * 20 mm free of keypoints between them. Else (touching copies without an anchor, or the two
+  * "copies" are the halves of one object that looks the same after a half turn, which every
+  * anchor spans) it is left as it is. An object whose print repeats after a half turn in two
+  * patches 20 mm apart is split into its two patches too, as no method can tell it from two
+  * copies without a third.
   * Triplets whose sources lie on one side and targets on the other stay or are reversed so
   * that all go from the same side to the other; those straddling the plane, or with a keypoint
   * within 1 mm of it, or with a keypoint missing from the cluster's point sets, are dropped.
