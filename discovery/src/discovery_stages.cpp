@@ -120,6 +120,7 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
 /** Ours: the PPF triplet rejector, then DBSCAN in transformation space. */
 bool
 groupWithTriplets (const DiscoveryParameters& p,
+                   const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized,
                    DiscoveryResult& result,
                    TripletClusters& clusters)
 {
@@ -150,6 +151,12 @@ groupWithTriplets (const DiscoveryParameters& p,
   clustering.setMinClusterSize (p.min_cluster_size);
   clustering.setSplitChains (p.split_chains);
   clustering.setSplitCompounds (p.split_compounds);
+  if (organized) {
+    KeypointSurface surface{organized, {}};
+    for (const auto& k : result.image_keypoints)
+      surface.keypoint_pixels.push_back (k.pixel_index);
+    clustering.setKeypointSurface (surface);
+  }
   std::vector<pcl::Correspondences> groups;
   if (!triplets->empty())
     clustering.cluster (groups);
@@ -210,7 +217,8 @@ mergeMatchingModels (const DiscoveryParameters& p,
 bool
 discoverFromKeypoints (const DiscoveryParameters& p,
                        DiscoveryResult& result,
-                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface)
+                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
+                       const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
 {
   if (!result.keypoints || !result.descriptors) {
     PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
@@ -237,7 +245,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
 
   auto clusters = std::make_shared<TripletClusters>();
   if (p.grouping == Grouping::triplets) {
-    if (!groupWithTriplets (p, result, *clusters))
+    if (!groupWithTriplets (p, organized, result, *clusters))
       return false;
   }
   else {

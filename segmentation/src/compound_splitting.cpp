@@ -51,6 +51,11 @@ constexpr int kAnchorWeight = 4;
   */
 constexpr double kMaxAnchorCut = 0.1;
 
+/** Without anchors, the surface between two half-turn copies must fall this far (metres)
+  * behind the segment joining their closest keypoints.
+  */
+constexpr float kMinGapDrop = 0.01f;
+
 /** Planes through the half turn's axis tried, evenly spaced over half a turn. */
 constexpr int kPlaneCandidates = 180;
 
@@ -96,13 +101,40 @@ sameCopyLinks (const pcl::Indices& points,
   return links;
 }
 
-/** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster; empty when no
-  * anchor confirms the plane.
+/** True if the surface falls behind the segment between the closest two keypoints on either
+  * side of the plane (normal through center): a gap between two objects.
+  */
+bool
+gapBetweenSides (const pcl::Indices& points,
+                 const std::vector<Eigen::Vector3f>& offsets,
+                 const Eigen::Vector3f& normal,
+                 const KeypointCloud& keypoints,
+                 const KeypointSurface& surface)
+{
+  float closest = std::numeric_limits<float>::infinity();
+  std::pair<pcl::index_t, pcl::index_t> pair{-1, -1};
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = 0; j < points.size(); ++j)
+      if (offsets[i].dot (normal) > 0.0f && offsets[j].dot (normal) <= 0.0f) {
+        const float d =
+            (position (keypoints, points[i]) - position (keypoints, points[j])).norm();
+        if (d < closest) {
+          closest = d;
+          pair = {points[i], points[j]};
+        }
+      }
+  return pair.first >= 0 &&
+         surfaceDropsBetween (surface, pair.first, pair.second, kMinGapDrop);
+}
+
+/** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster; empty when
+  * nothing confirms the plane.
   */
 std::map<pcl::index_t, int>
 halfTurnSides (const TripletCluster& cluster,
                const std::vector<pcl::Indices>& anchors,
-               const KeypointCloud& keypoints)
+               const KeypointCloud& keypoints,
+               const KeypointSurface* surface)
 {
   const Eigen::Matrix3f rotation = cluster.transformation.topLeftCorner<3, 3>();
   const Eigen::Vector3f translation = cluster.transformation.topRightCorner<3, 1>();
@@ -152,11 +184,13 @@ halfTurnSides (const TripletCluster& cluster,
   std::map<pcl::index_t, int> sides;
   // A plane that cuts anchors may cross both copies, or the copies may be the two halves of
   // one symmetric object: leave the cluster as it is. Without anchors, only a plane through
-  // an empty gap between the copies is trusted.
-  const bool confirmed = anchor_links > 0
-                             ? static_cast<double> (anchors_cut) <=
-                                   kMaxAnchorCut * static_cast<double> (anchor_links)
-                             : fewest_cut == 0;
+  // a gap free of keypoints where the surface shows two objects is trusted.
+  const bool confirmed =
+      anchor_links > 0
+          ? static_cast<double> (anchors_cut) <=
+                kMaxAnchorCut * static_cast<double> (anchor_links)
+          : fewest_cut == 0 && surface != nullptr &&
+                gapBetweenSides (points, offsets, normal, keypoints, *surface);
   if (!confirmed)
     return sides;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -224,7 +258,8 @@ std::vector<TripletOrientation>
 orientHalfTurnCluster (const TripletCluster& cluster,
                        const std::vector<pcl::Indices>& anchors,
                        const TripletMatches& triplets,
-                       const KeypointCloud& keypoints)
+                       const KeypointCloud& keypoints,
+                       const KeypointSurface* surface)
 {
   const std::size_t smaller =
       std::min (cluster.source_indices.size(), cluster.target_indices.size());
@@ -235,7 +270,8 @@ orientHalfTurnCluster (const TripletCluster& cluster,
           detail::sharedKeypoints (cluster.source_indices, cluster.target_indices)
               .size()) < kMinSharedFraction * static_cast<double> (smaller))
     return {};
-  const std::map<pcl::index_t, int> sides = halfTurnSides (cluster, anchors, keypoints);
+  const std::map<pcl::index_t, int> sides =
+      halfTurnSides (cluster, anchors, keypoints, surface);
   if (sides.empty())
     return {};
 

@@ -224,6 +224,7 @@ splitStraddlers (const TripletMatches& triplets,
 void
 orientHalfTurns (const TripletMatches& triplets,
                  const KeypointCloud& keypoints,
+                 const KeypointSurface* surface,
                  TripletClusters& clusters)
 {
   std::vector<pcl::Indices> anchors;
@@ -234,7 +235,7 @@ orientHalfTurns (const TripletMatches& triplets,
     }
   for (auto& cluster : clusters) {
     const std::vector<TripletOrientation> orientation =
-        orientHalfTurnCluster (cluster, anchors, triplets, keypoints);
+        orientHalfTurnCluster (cluster, anchors, triplets, keypoints, surface);
     TripletCluster oriented;
     for (std::size_t m = 0; m < orientation.size(); ++m)
       if (orientation[m] != TripletOrientation::drop) {
@@ -257,10 +258,11 @@ orientHalfTurns (const TripletMatches& triplets,
 void
 splitCompounds (const TripletMatches& triplets,
                 const KeypointCloud& keypoints,
+                const KeypointSurface* surface,
                 TripletClusters& clusters)
 {
   splitStraddlers (triplets, keypoints, clusters);
-  orientHalfTurns (triplets, keypoints, clusters);
+  orientHalfTurns (triplets, keypoints, surface, clusters);
   splitStraddlers (triplets, keypoints, clusters);
 }
 
@@ -376,6 +378,15 @@ TransformationSpaceClustering::checkInputs (const TripletMatches& triplets) cons
   }
   if (input_->empty() || scene_->empty()) {
     PCL_ERROR ("%s The model or scene keypoint cloud is empty.\n", name);
+    return false;
+  }
+  if (surface_.organized && !isValidKeypointSurface (surface_, input_->size())) {
+    PCL_ERROR (
+        "%s The keypoint surface is not organized or does not give a pixel inside it "
+        "for each of the %zu keypoints (%zu given).\n",
+        name,
+        input_->size(),
+        surface_.keypoint_pixels.size());
     return false;
   }
   for (std::size_t i = 0; i < triplets.size(); ++i) {
@@ -496,7 +507,8 @@ TransformationSpaceClustering::clusterCorrespondences (
     std::sort (clusters.begin(), clusters.end(), larger);
   }
   if (split_compounds_ && one_frame) {
-    splitCompounds (used_triplets_, *input_, clusters);
+    splitCompounds (
+        used_triplets_, *input_, surface_.organized ? &surface_ : nullptr, clusters);
     std::sort (clusters.begin(), clusters.end(), larger);
   }
 

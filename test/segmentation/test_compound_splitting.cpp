@@ -1,4 +1,5 @@
 #include "cluster_triplets.h"
+#include "plate_surface.h"
 #include "rigid_motion.h"
 
 #include <mid/registration/triplet_match.h>
@@ -221,31 +222,84 @@ TEST (CompoundSplitting, OrientsAHalfTurnFromOneCopyToTheOther)
   EXPECT_NE (source_copies, target_copies);
 }
 
+/** Two copies 20 cm apart: copy 1 is copy 0 turned about a vertical axis 10 cm beside it (no
+  * keypoint of one is a neighbour of the other, so the plane between them cuts no link), and
+  * the half-turn cluster between them with no third copy to anchor it.
+  */
+struct CopiesApart
+{
+  CopiesApart()
+  {
+    scene.add (kFirst);
+    scene.add (mid::test::rigidMotion (Eigen::Vector3f (-0.2f, 0.0f, 0.0f)) *
+               kHalfTurn);
+    scene.link (0, 1, half_turn);
+    scene.link (1, 0, half_turn);
+    scene.finish (half_turn);
+  }
+
+  /** The keypoints seen on `plates` (their tops at the copies' upper face, y = 9.5 cm) above
+    * a floor 2.5 cm lower.
+    */
+  mid::KeypointSurface
+  surface (const std::vector<mid::test::Plate>& plates) const
+  {
+    mid::KeypointSurface seen{mid::test::renderPlates (plates, 0.12f), {}};
+    for (const auto& k : *scene.keypoints)
+      seen.keypoint_pixels.push_back (
+          mid::test::plateSurfacePixel (k.getVector3fMap()));
+    return seen;
+  }
+
+  /** The copies' upper faces (x in [0.5, 6.5] cm for copy 0, 20 cm to the left for copy 1). */
+  static constexpr mid::test::Plate kCopy0{0.005f, 0.065f, 0.81f, 0.99f, 0.095f},
+      kCopy1{-0.265f, -0.205f, 0.81f, 0.99f, 0.095f};
+
+  Copies scene;
+  mid::TripletCluster half_turn;
+};
+
 TEST (CompoundSplitting, OrientsAHalfTurnBetweenCopiesApartWithoutAnAnchor)
 {
-  // Copy 1 is copy 0 turned about a vertical axis 10 cm beside it: the copies lie 20 cm
-  // apart, no keypoint of one is a neighbour of the other, and the plane between them cuts
-  // no link. No third copy is needed to tell them apart.
-  Copies scene;
-  scene.add (kFirst);
-  scene.add (mid::test::rigidMotion (Eigen::Vector3f (-0.2f, 0.0f, 0.0f)) * kHalfTurn);
-  mid::TripletCluster half_turn;
-  scene.link (0, 1, half_turn);
-  scene.link (1, 0, half_turn);
-  scene.finish (half_turn);
-  ASSERT_EQ (copiesOf (half_turn.source_indices), (std::set<int>{0, 1}));
+  // The surface shows the floor between the copies: no third copy is needed to tell them
+  // apart.
+  const CopiesApart apart;
+  ASSERT_EQ (copiesOf (apart.half_turn.source_indices), (std::set<int>{0, 1}));
+  const mid::KeypointSurface surface =
+      apart.surface ({CopiesApart::kCopy0, CopiesApart::kCopy1});
+  ASSERT_TRUE (mid::isValidKeypointSurface (surface, apart.scene.keypoints->size()));
 
-  const auto orientation =
-      mid::orientHalfTurnCluster (half_turn, {}, *scene.triplets, *scene.keypoints);
-  ASSERT_EQ (orientation.size(), half_turn.triplets.size());
+  const auto orientation = mid::orientHalfTurnCluster (
+      apart.half_turn, {}, *apart.scene.triplets, *apart.scene.keypoints, &surface);
+  ASSERT_EQ (orientation.size(), apart.half_turn.triplets.size());
   EXPECT_EQ (std::count (
                  orientation.begin(), orientation.end(), mid::TripletOrientation::drop),
              0);
   const auto [source_copies, target_copies] =
-      orientedCopies (scene, half_turn, orientation);
+      orientedCopies (apart.scene, apart.half_turn, orientation);
   EXPECT_EQ (source_copies.size(), 1u);
   EXPECT_EQ (target_copies.size(), 1u);
   EXPECT_NE (source_copies, target_copies);
+
+  // Without a surface only an anchor could confirm the plane.
+  EXPECT_TRUE (mid::orientHalfTurnCluster (
+                   apart.half_turn, {}, *apart.scene.triplets, *apart.scene.keypoints)
+                   .empty());
+}
+
+TEST (CompoundSplitting, LeavesTwoPatchesOfOneSurfaceAlone)
+{
+  // The same keypoints on one object: its print repeats after a half turn, in two patches
+  // with 21 cm free of keypoints between them. Its surface runs on between the patches.
+  const CopiesApart patches;
+  const mid::KeypointSurface one_object = patches.surface (
+      {{CopiesApart::kCopy1.x_min, CopiesApart::kCopy0.x_max, 0.81f, 0.99f, 0.095f}});
+  EXPECT_TRUE (mid::orientHalfTurnCluster (patches.half_turn,
+                                           {},
+                                           *patches.scene.triplets,
+                                           *patches.scene.keypoints,
+                                           &one_object)
+                   .empty());
 }
 
 TEST (CompoundSplitting, LeavesAHalfTurnWithoutAnAnchorOnOneSideAlone)

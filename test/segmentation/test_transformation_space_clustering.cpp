@@ -286,6 +286,17 @@ TEST (TransformationSpaceClustering, BadInputGivesAnEmptyResult)
   triplets.back().correspondences[0].index_match = 100000; // outside the cloud
   EXPECT_TRUE (runClustering (clustering, s, triplets).empty());
 
+  // A keypoint surface must give each keypoint a pixel inside an organized cloud.
+  triplets = makeTriplets (s, false);
+  const auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (4, 4);
+  const std::size_t n = s.keypoints->size();
+  clustering.setKeypointSurface ({organized, pcl::Indices (n, 15)});
+  EXPECT_EQ (runClustering (clustering, s, triplets).size(), 3u);
+  clustering.setKeypointSurface ({organized, pcl::Indices (n - 1, 0)});
+  EXPECT_TRUE (runClustering (clustering, s, triplets).empty());
+  clustering.setKeypointSurface ({organized, pcl::Indices (n, 16)});
+  EXPECT_TRUE (runClustering (clustering, s, triplets).empty());
+
   mid::TransformationSpaceClustering no_scene;
   no_scene.setInputCloud (s.keypoints);
   no_scene.setInputTriplets (

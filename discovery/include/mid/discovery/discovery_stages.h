@@ -13,13 +13,18 @@ namespace mid {
   * \param[in] parameters the parameters
   * \param[in,out] result keypoints and descriptors in; matches, counts, models and times out
   * \param[in] surface the frame's points with normals; needed by Grouping::hough3d only
+  * \param[in] organized the organized frame the keypoints were found in, with
+  * result.image_keypoints giving their pixels (ImageKeypoint::pixel_index); optional: it lets
+  * the clustering orient a half turn between two copies lying apart that no third copy
+  * anchors (TransformationSpaceClustering::setKeypointSurface())
   * \return false (with a PCL_ERROR) if a stage refuses its input or parameters
   */
 bool
 discoverFromKeypoints (
     const DiscoveryParameters& parameters,
     DiscoveryResult& result,
-    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr);
+    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr,
+    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized = nullptr);
 
 /** \brief The pipeline's model merging (DiscoveryParameters::merge_models): every model j is
   * searched, by descriptor matching and RANSAC (ModelInstanceDetector), among the landmarks of

@@ -3,6 +3,7 @@
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/triplet_cluster.h>
 #include <mid/registration/triplet_match.h>
+#include <mid/segmentation/surface_gap.h>
 
 #include <cstddef>
 #include <vector>
@@ -38,12 +39,13 @@ enum class TripletOrientation {
   * within 5 mm of one anchor set (a point set of another cluster, which lies on a single copy
   * and so tells where a copy ends; weight 4). The cluster is oriented only if the plane is
   * confirmed: when anchor links exist, it cuts at most 10 % of them; when none exist (no third
-  * copy matched to one of the two), it cuts no link at all, so the copies lie apart, with
-  * 20 mm free of keypoints between them. Else (touching copies without an anchor, or the two
-  * "copies" are the halves of one object that looks the same after a half turn, which every
-  * anchor spans) it is left as it is. An object whose print repeats after a half turn in two
-  * patches 20 mm apart is split into its two patches too, as no method can tell it from two
-  * copies without a third.
+  * copy matched to one of the two), it must cut no link at all (20 mm free of keypoints
+  * between the copies) and the surface must show a gap there: between the two closest
+  * keypoints across the plane it falls more than 10 mm behind the segment joining them
+  * (surfaceDropsBetween(): the floor or the background seen between two objects; one object's
+  * own surface does not fall behind its chords). Else (touching copies without an anchor, no
+  * surface given, or the two "copies" are the halves of one object that looks the same after
+  * a half turn, which every anchor spans and whose surface shows no gap) it is left as it is.
   * Triplets whose sources lie on one side and targets on the other stay or are reversed so
   * that all go from the same side to the other; those straddling the plane, or with a keypoint
   * within 1 mm of it, or with a keypoint missing from the cluster's point sets, are dropped.
@@ -52,14 +54,17 @@ enum class TripletOrientation {
   * clusters); may be empty
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] keypoints the frame's keypoints (source and target are one cloud)
-  * \return one entry per member triplet; empty when the cluster is not such a half turn or no
-  * anchor confirms the plane
+  * \param[in] surface the organized frame and the keypoints' pixels in it (a valid
+  * KeypointSurface, isValidKeypointSurface()), or nullptr: then only anchors confirm a plane
+  * \return one entry per member triplet; empty when the cluster is not such a half turn or
+  * nothing confirms the plane
   */
 std::vector<TripletOrientation>
 orientHalfTurnCluster (const TripletCluster& cluster,
                        const std::vector<pcl::Indices>& anchors,
                        const TripletMatches& triplets,
-                       const KeypointCloud& keypoints);
+                       const KeypointCloud& keypoints,
+                       const KeypointSurface* surface = nullptr);
 
 /** \brief Split a cluster one of whose point sets straddles the two copies of another
   * cluster.

@@ -4,6 +4,7 @@
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/triplet_cluster.h>
 #include <mid/registration/triplet_match.h>
+#include <mid/segmentation/surface_gap.h>
 
 #include <pcl/recognition/cg/correspondence_grouping.h>
 
@@ -186,6 +187,25 @@ public:
   }
   ///@}
 
+  /** \brief The organized frame behind the keypoints, and each keypoint's pixel in it: lets
+    * the compound splitting orient a half turn between two copies lying apart that no third
+    * copy anchors, where the surface shows the gap between them (orientHalfTurnCluster()).
+    * Unset by default (only anchors orient half turns); cluster() refuses one that is not
+    * organized or does not give a pixel inside it for every keypoint of the input cloud.
+    */
+  ///@{
+  void
+  setKeypointSurface (const KeypointSurface& surface)
+  {
+    surface_ = surface;
+  }
+  const KeypointSurface&
+  getKeypointSurface () const
+  {
+    return surface_;
+  }
+  ///@}
+
   /** \brief Most neighbour entries (16 bytes each) kept in memory. Within this budget each
     * pair of triplets is compared once; beyond it every region query compares again (same
     * result, about four times the work). Default 8 Mi entries (128 MiB).
@@ -263,6 +283,7 @@ private:
   bool merge_inverse_ = true;
   bool split_chains_ = true;
   bool split_compounds_ = true;
+  KeypointSurface surface_;
   std::size_t max_stored_neighbors_ = std::size_t{8} << 20;
   TripletMatches used_triplets_;
   TripletClusters clusters_;

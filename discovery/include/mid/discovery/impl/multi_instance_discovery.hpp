@@ -4,6 +4,7 @@
 #include <mid/discovery/multi_instance_discovery.h>
 #include <mid/features/sift_keypoint_extractor.h>
 
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/common/time.h>
 #include <pcl/features/integral_image_normal.h>
@@ -55,7 +56,10 @@ MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
       }
     result.timing_ms.emplace_back ("surface_normals", watch.getTime());
   }
-  if (!discoverFromKeypoints (parameters_, result, surface)) {
+  // The organized points let the clustering see the surface between two copies.
+  auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (*input_, *organized);
+  if (!discoverFromKeypoints (parameters_, result, surface, organized)) {
     result = DiscoveryResult();
     return false;
   }

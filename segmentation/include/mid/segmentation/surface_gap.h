@@ -1,0 +1,51 @@
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/types.h>
+
+namespace mid {
+
+/** \brief The frame's organized points and the pixel each keypoint was found at: what a
+  * keypoint-only step needs to look at the surface between two keypoints.
+  */
+struct KeypointSurface
+{
+  /** \brief The organized frame (camera frame, metres; NaN where the depth is missing). */
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr organized;
+  /** \brief For each keypoint of the keypoint cloud, its pixel in `organized` (row * width +
+    * column).
+    */
+  pcl::Indices keypoint_pixels;
+};
+
+/** \brief True if `surface` is organized and gives a pixel inside it for each of
+  * `keypoints` keypoints.
+  */
+bool
+isValidKeypointSurface (const KeypointSurface& surface, std::size_t keypoints);
+
+/** \brief True if the surface seen between two keypoints falls behind the straight segment
+  * joining them by more than `min_drop` somewhere: the two lie on different objects, with
+  * something farther from the camera (the floor, the background) between them.
+  *
+  * Walks the image line between the two keypoints' pixels; at each pixel with a valid point
+  * p, compares p's distance from the camera with that of the segment along p's viewing ray
+  * (the point of the segment's line closest to the ray). The visible surface of one convex
+  * object lies in front of every chord between two of its points, so it never drops; nor does
+  * a flat or gently curved face. Missing depth is ignored: it does not tell a border from a
+  * reflection.
+  * \param[in] surface a valid KeypointSurface (isValidKeypointSurface(); not checked)
+  * \param[in] a one keypoint (index into the keypoint cloud)
+  * \param[in] b another keypoint
+  * \param[in] min_drop how far behind the segment (metres, along the viewing ray) the
+  * surface must fall
+  * \return false if no pixel between them falls that far, or either end has no valid point
+  */
+bool
+surfaceDropsBetween (const KeypointSurface& surface,
+                     pcl::index_t a,
+                     pcl::index_t b,
+                     float min_drop);
+
+} // namespace mid
