@@ -62,7 +62,8 @@ surfaceDropsBetween (const KeypointSurface& surface,
                            std::lround (static_cast<double> (i * (u1 - u0)) / n)),
               v = v0 + static_cast<int> (
                            std::lround (static_cast<double> (i * (v1 - v0)) / n));
-    const pcl::PointXYZ& p = cloud[static_cast<std::size_t> (v * width + u)];
+    const pcl::PointXYZ& p =
+        cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
     if (!pcl::isXYZFinite (p))
       continue;
     const float range = p.getVector3fMap().norm();
