@@ -87,17 +87,17 @@ bool
 parseOptions (int argc, char** argv, Options& options)
 {
   using pcl::console::parse_argument;
-  for (int i = 1; i < argc && options.model_path.empty(); ++i) {
-    const std::string argument = argv[i];
-    if (argument.size() > 5 &&
-        argument.compare (argument.size() - 5, 5, ".json") == 0 &&
+  // The model: the one .json argument that is not the value of -json.
+  std::vector<std::string> models;
+  for (int i = 1; i < argc; ++i)
+    if (mid::apps::endsWithIgnoringCase (argv[i], ".json") &&
         std::string (argv[i - 1]) != "-json")
-      options.model_path = argument;
-  }
-  if (options.model_path.empty()) {
-    print_error ("Give the model file MODEL.json first.\n");
+      models.emplace_back (argv[i]);
+  if (models.size() != 1) {
+    print_error ("Give exactly one model file MODEL.json (got %zu).\n", models.size());
     return false;
   }
+  options.model_path = models.front();
   mid::apps::OptionSpecs known = kOptions;
   for (const auto& more :
        {mid::apps::sceneInputOptions(), mid::apps::VisualOutputs::options()})

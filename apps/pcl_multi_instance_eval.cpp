@@ -171,6 +171,15 @@ main (int argc, char** argv)
   std::vector<fs::path> results;
   for (int i = 2; i < argc && argv[i][0] != '-'; ++i)
     results.emplace_back (argv[i]);
+  // Every folder comes before the options, which are checked like every app's (an unknown
+  // word or a missing value would otherwise be ignored).
+  std::vector<char*> options{argv[0]};
+  options.insert (options.end(), argv + 2 + results.size(), argv + argc);
+  if (!mid::apps::onlyKnownArguments (
+          static_cast<int> (options.size()),
+          options.data(),
+          {{"-report", 1}, {"-min_inside", 1}, {"-names", 1}, {"-frames", 0}}))
+    return 1;
   std::string report_path, names_list;
   double min_inside = 0.9;
   pcl::console::parse_argument (argc, argv, "-report", report_path);
@@ -186,19 +195,6 @@ main (int argc, char** argv)
   if (results.empty()) {
     print_error ("No RESULTS_DIR given.\n");
     return 1;
-  }
-  // Every folder comes before the options: a word after them that is not an option's value
-  // would silently be ignored.
-  for (int i = 2 + static_cast<int> (results.size()); i < argc; ++i) {
-    const std::string word = argv[i];
-    if (word == "-report" || word == "-min_inside" || word == "-names")
-      ++i;
-    else if (word != "-frames") {
-      print_error (
-          "Unexpected argument '%s' (results folders come before the options).\n",
-          argv[i]);
-      return 1;
-    }
   }
   const auto not_folder = [] (const fs::path& folder) {
     return !fs::is_directory (folder);

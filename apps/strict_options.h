@@ -30,6 +30,22 @@ struct OptionSpec
 
 using OptionSpecs = std::vector<OptionSpec>;
 
+/** \brief True if `text` ends in `ending` (and is longer), ignoring case, as
+  * pcl::console::parse_file_extension_argument does (SCENE.PCD is a scene).
+  */
+inline bool
+endsWithIgnoringCase (const std::string& text, const std::string& ending)
+{
+  return text.size() > ending.size() &&
+         std::equal (ending.begin(),
+                     ending.end(),
+                     text.end() - static_cast<std::ptrdiff_t> (ending.size()),
+                     [] (char a, char b) {
+                       return std::tolower (static_cast<unsigned char> (a)) ==
+                              std::tolower (static_cast<unsigned char> (b));
+                     });
+}
+
 /** \brief True if every argument is one of `options` followed by its values, or a file argument
   * (not starting with '-') whose name ends in one of `file_endings`; otherwise prints which
   * argument is wrong and returns false. Which files an app needs is for the app to check.
@@ -40,17 +56,6 @@ onlyKnownArguments (int argc,
                     const OptionSpecs& options,
                     const std::vector<std::string>& file_endings = {})
 {
-  // Case-insensitive, as pcl::console::parse_file_extension_argument (SCENE.PCD is a scene).
-  const auto endsWith = [] (const std::string& text, const std::string& ending) {
-    return text.size() > ending.size() &&
-           std::equal (ending.begin(),
-                       ending.end(),
-                       text.end() - static_cast<std::ptrdiff_t> (ending.size()),
-                       [] (char a, char b) {
-                         return std::tolower (static_cast<unsigned char> (a)) ==
-                                std::tolower (static_cast<unsigned char> (b));
-                       });
-  };
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     const auto option =
@@ -58,12 +63,12 @@ onlyKnownArguments (int argc,
                       options.end(),
                       [&argument] (const OptionSpec& o) { return argument == o.name; });
     if (option == options.end()) {
-      const bool file =
-          argument[0] != '-' && std::any_of (file_endings.begin(),
-                                             file_endings.end(),
-                                             [&] (const std::string& ending) {
-                                               return endsWith (argument, ending);
-                                             });
+      const bool file = argument[0] != '-' &&
+                        std::any_of (file_endings.begin(),
+                                     file_endings.end(),
+                                     [&] (const std::string& ending) {
+                                       return endsWithIgnoringCase (argument, ending);
+                                     });
       if (!file) {
         pcl::console::print_error ("Unknown argument '%s' (see -h).\n", argv[i]);
         return false;
@@ -142,8 +147,39 @@ highestInteger ()
              : static_cast<long> (std::numeric_limits<T>::max());
 }
 
+/** \brief True if `text` is a plain decimal number: an optional '-', digits with an optional
+  * fraction (at least one digit in all), and an optional exponent ('e' or 'E', an optional
+  * sign, digits). strtod alone also takes a '+', hexadecimal, "inf" and "nan".
+  */
+inline bool
+isPlainDecimal (const std::string& text)
+{
+  const auto digit = [&text] (std::size_t i) {
+    return i < text.size() && std::isdigit (static_cast<unsigned char> (text[i]));
+  };
+  std::size_t i = text.empty() || text[0] != '-' ? 0 : 1, digits = 0;
+  for (; digit (i); ++i)
+    ++digits;
+  if (i < text.size() && text[i] == '.')
+    for (++i; digit (i); ++i)
+      ++digits;
+  if (digits == 0)
+    return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-'))
+      ++i;
+    if (!digit (i))
+      return false;
+    while (digit (i))
+      ++i;
+  }
+  return i == text.size();
+}
+
 /** \brief Strict conversion of a whole string to a number of type T: an integer in T's range
-  * for an integral T, a finite number for a floating-point T.
+  * for an integral T; for a floating-point T, a plain decimal (isPlainDecimal()) that T holds
+  * without overflowing, or underflowing to 0.
   */
 template <typename T>
 bool
@@ -157,13 +193,14 @@ toNumber (const std::string& text, T& value)
     return true;
   }
   else {
-    if (text.empty() || std::isspace (static_cast<unsigned char> (text[0])))
+    if (!isPlainDecimal (text))
       return false;
     errno = 0;
     char* end = nullptr;
     const double number = std::strtod (text.c_str(), &end);
     if (errno != 0 || *end != '\0' || !std::isfinite (number) ||
-        std::abs (number) > static_cast<double> (std::numeric_limits<T>::max()))
+        std::abs (number) > static_cast<double> (std::numeric_limits<T>::max()) ||
+        (number != 0.0 && static_cast<T> (number) == T (0)))
       return false;
     value = static_cast<T> (number);
     return true;

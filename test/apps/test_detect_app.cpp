@@ -103,7 +103,16 @@ TEST (DetectApp, RefusesUnknownArgumentsAndMalformedNumbers)
   for (const auto& [extra, message] :
        {std::pair<std::string, std::string>{" -iteratoins 10", "Unknown argument"},
         {" -iterations 1e3", "-iterations must be an integer"},
-        {" -inlier 5mm", "-inlier must be a number, got '5mm'"}}) {
+        {" -inlier 5mm", "-inlier must be a number, got '5mm'"},
+        // strtod alone reads these as 5, 8 and 0.
+        {" -inlier +5", "-inlier must be a number, got '+5'"},
+        {" -inlier 0x8", "-inlier must be a number, got '0x8'"},
+        {" -min_ratio 1e-50", "-min_ratio must be a number, got '1e-50'"},
+        // A second model would be ignored.
+        {" " + folder.file ("model_0.json"),
+         "Give exactly one model file MODEL.json (got 2)"},
+        {" " + folder.file ("other.JSON"),
+         "Give exactly one model file MODEL.json (got 2)"}}) {
     SCOPED_TRACE (extra);
     const auto result = mid::test::runCommand (command + extra);
     EXPECT_FALSE (result.crashed);

@@ -86,6 +86,35 @@ TEST (EvalApp, RefusesUnusableFolders)
       << empty.output;
 }
 
+TEST (EvalApp, RefusesUnknownOptionsAndMissingValues)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto dataset = folder.path() / "dataset", results = folder.path() / "results";
+  std::filesystem::create_directories (dataset / "000000");
+  std::filesystem::create_directories (results / "000000");
+  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
+  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
+  const std::string command =
+      std::string (MID_EVAL_APP) + " " + dataset.string() + " " + results.string();
+  for (const auto& [options, message] :
+       {std::pair<std::string, std::string>{" -reprot out.md",
+                                            "Unknown argument '-reprot'"},
+        {" -report", "-report needs 1 value"},
+        {" -report -frames", "-report needs 1 value"},
+        {" -frames " + results.string(), "Unknown argument"},
+        {" -min_inside +0.5", "-min_inside must be a number, got '+0.5'"}}) {
+    SCOPED_TRACE (options);
+    const auto run = mid::test::runCommand (command + options);
+    EXPECT_FALSE (run.crashed);
+    EXPECT_NE (run.exit_code, 0);
+    EXPECT_NE (run.output.find (message), std::string::npos) << run.output;
+  }
+  const auto valid =
+      mid::test::runCommand (command + " -frames -report " + folder.file ("report.md"));
+  EXPECT_EQ (valid.exit_code, 0) << valid.output;
+  EXPECT_TRUE (std::filesystem::exists (folder.file ("report.md")));
+}
+
 TEST (EvalApp, PutsMethodsSideBySide)
 {
   const mid::test::TemporaryFolder folder;
