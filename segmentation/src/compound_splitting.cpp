@@ -162,6 +162,7 @@ halfTurnSides (const TripletCluster& cluster,
       links.begin(), links.end(), [] (const Link& link) { return link.anchor; }));
   Eigen::Vector3f normal = e1;
   long fewest_cut = std::numeric_limits<long>::max();
+  float widest_margin = 0.0f;
   std::size_t anchors_cut = 0;
   for (int step = 0; step < kPlaneCandidates; ++step) {
     const double angle = M_PI * step / kPlaneCandidates;
@@ -175,8 +176,15 @@ halfTurnSides (const TripletCluster& cluster,
         cut += link.anchor ? kAnchorWeight : 1;
         cut_anchor_links += link.anchor ? 1 : 0;
       }
-    if (cut < fewest_cut) {
+    // Among planes cutting as few links, the one farthest from every keypoint: between two
+    // copies lying apart, the plane through the middle of the gap, not one through an
+    // unprinted band of both.
+    float margin = std::numeric_limits<float>::infinity();
+    for (const auto& offset : offsets)
+      margin = std::min (margin, std::abs (offset.dot (candidate)));
+    if (cut < fewest_cut || (cut == fewest_cut && margin > widest_margin)) {
       fewest_cut = cut;
+      widest_margin = margin;
       anchors_cut = cut_anchor_links;
       normal = candidate;
     }

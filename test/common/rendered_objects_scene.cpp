@@ -5,6 +5,7 @@
 #include <mid/simulation/procedural_texture.h>
 #include <mid/simulation/scene.h>
 #include <mid/simulation/scene_renderer.h>
+#include <mid/simulation/table_plane.h>
 #include <mid/simulation/texture.h>
 
 #include <map>
@@ -25,7 +26,7 @@ boxPose (double x, double y, double z, double roll, double tilt)
 }
 
 RenderedObjectsScene
-renderBoxes (const std::vector<BoxSpec>& boxes)
+renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth)
 {
   RenderedObjectsScene result;
   result.boxes = boxes;
@@ -44,6 +45,13 @@ renderBoxes (const std::vector<BoxSpec>& boxes)
     shape->setTexture (mid::simulation::makeUniformTexture (cv::Vec3b (200, 200, 200)));
     shape->setFaceTexture (mid::simulation::BoxShape::NEG_Z, textures[box.texture]);
     scene.addObject (shape, box.pose);
+  }
+  if (table_depth > 0.0) {
+    auto table = std::make_shared<mid::simulation::TablePlane> (1.0, 1.0);
+    table->setTexture (mid::simulation::makeUniformTexture (cv::Vec3b (120, 120, 120)));
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation().z() = table_depth;
+    scene.addBackgroundObject (table, pose);
   }
   mid::simulation::SceneRenderer renderer;
   if (!renderer.render (scene, result.frame))

@@ -37,9 +37,13 @@ struct RenderedObjectsScene
 Eigen::Isometry3d
 boxPose (double x, double y, double z, double roll, double tilt = 0.0);
 
-/** \brief Render the boxes (exact depth, no sensor noise) into a VGA frame and cloud. */
+/** \brief Render the boxes (exact depth, no sensor noise) into a VGA frame and cloud.
+  * \param[in] boxes the boxes
+  * \param[in] table_depth > 0: an untextured table facing the camera at this depth (metres)
+  * behind the boxes, as a table seen from above; 0: empty space (no depth) around them
+  */
 RenderedObjectsScene
-renderBoxes (const std::vector<BoxSpec>& boxes);
+renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth = 0.0);
 
 /** \brief The box (index into the scene's boxes) most of the given image keypoints lie on, or -1
   * if most lie on the background.

@@ -37,7 +37,9 @@ enum class TripletOrientation {
   * them). The plane kept, among 180 through the axis, cuts the fewest links between keypoints
   * that lie on one copy: keypoints closer than 20 mm (one surface, weight 1), and keypoints
   * within 5 mm of one anchor set (a point set of another cluster, which lies on a single copy
-  * and so tells where a copy ends; weight 4). The cluster is oriented only if the plane is
+  * and so tells where a copy ends; weight 4); among planes cutting as few, the one farthest
+  * from every keypoint (for copies lying apart: through the middle of the gap, not through an
+  * unprinted band of both). The cluster is oriented only if the plane is
   * confirmed: when anchor links exist, it cuts at most 10 % of them; when none exist (no third
   * copy matched to one of the two), it must cut no link at all (20 mm free of keypoints
   * between the copies) and the surface must show a gap there: between the two closest
