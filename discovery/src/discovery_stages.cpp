@@ -8,6 +8,7 @@
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
+#include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 
 #include <pcl/common/time.h>
@@ -117,10 +118,12 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
   return true;
 }
 
-/** Ours: the PPF triplet rejector, then DBSCAN in transformation space. */
+/** Ours: the PPF triplet rejector, then DBSCAN in transformation space (`surface` lets it
+  * orient anchorless half turns; unset when its cloud is null).
+  */
 bool
 groupWithTriplets (const DiscoveryParameters& p,
-                   const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized,
+                   const KeypointSurface& surface,
                    DiscoveryResult& result,
                    TripletClusters& clusters)
 {
@@ -151,15 +154,10 @@ groupWithTriplets (const DiscoveryParameters& p,
   clustering.setMinClusterSize (p.min_cluster_size);
   clustering.setSplitChains (p.split_chains);
   clustering.setSplitCompounds (p.split_compounds);
-  if (organized) {
-    KeypointSurface surface{organized, {}};
-    for (const auto& k : result.image_keypoints)
-      surface.keypoint_pixels.push_back (k.pixel_index);
-    clustering.setKeypointSurface (surface);
-  }
+  clustering.setKeypointSurface (surface);
   std::vector<pcl::Correspondences> groups;
   if (!triplets->empty())
-    clustering.cluster (groups);
+    clustering.cluster (groups); // PCL's void interface: a refusal leaves no clusters
   clusters = clustering.getClusters();
   result.clusters = clusters.size();
   result.timing_ms.emplace_back ("clustering", watch.getTime());
@@ -230,6 +228,21 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                problem.c_str());
     return false;
   }
+  KeypointSurface keypoint_surface{organized, {}};
+  if (organized) {
+    for (const auto& k : result.image_keypoints)
+      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+    if (!isValidKeypointSurface (keypoint_surface, result.keypoints->size())) {
+      PCL_ERROR (
+          "[mid::discoverFromKeypoints] The organized frame (%u x %u) does not hold "
+          "the pixels of the %zu keypoints (%zu image keypoints given).\n",
+          organized->width,
+          organized->height,
+          result.keypoints->size(),
+          result.image_keypoints.size());
+      return false;
+    }
+  }
   pcl::StopWatch watch;
   SelfMatcher matcher;
   matcher.setInputKeypoints (result.keypoints);
@@ -245,7 +258,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
 
   auto clusters = std::make_shared<TripletClusters>();
   if (p.grouping == Grouping::triplets) {
-    if (!groupWithTriplets (p, organized, result, *clusters))
+    if (!groupWithTriplets (p, keypoint_surface, result, *clusters))
       return false;
   }
   else {

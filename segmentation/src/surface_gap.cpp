@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace mid {
 
@@ -13,17 +14,17 @@ namespace {
 /** Distance from the camera, along the unit ray `ray`, of the point of the line through `from`
   * with direction `step` that comes closest to the ray (infinity if they are parallel).
   */
-float
-lineDepthAlongRay (const Eigen::Vector3f& from,
-                   const Eigen::Vector3f& step,
-                   const Eigen::Vector3f& ray)
+double
+lineDepthAlongRay (const Eigen::Vector3d& from,
+                   const Eigen::Vector3d& step,
+                   const Eigen::Vector3d& ray)
 {
   // Closest points of ray r * d and line from + s * e: r = ((e.e)(d.w) - (e.d)(e.w)) / den,
   // with w = from and den = (e.e) - (e.d)^2 for a unit d.
-  const float ee = step.squaredNorm(), ed = step.dot (ray);
-  const float den = ee - ed * ed;
-  if (!(den > 1e-12f * ee))
-    return std::numeric_limits<float>::infinity();
+  const double ee = step.squaredNorm(), ed = step.dot (ray);
+  const double den = ee - ed * ed;
+  if (!(den > 1e-12 * ee))
+    return std::numeric_limits<double>::infinity();
   return (ee * ray.dot (from) - ed * step.dot (from)) / den;
 }
 
@@ -45,7 +46,8 @@ bool
 surfaceDropsBetween (const KeypointSurface& surface,
                      pcl::index_t a,
                      pcl::index_t b,
-                     float min_drop)
+                     float min_drop,
+                     int min_pixels)
 {
   const pcl::PointCloud<pcl::PointXYZ>& cloud = *surface.organized;
   const auto width = static_cast<int> (cloud.width);
@@ -53,10 +55,12 @@ surfaceDropsBetween (const KeypointSurface& surface,
                      pb = surface.keypoint_pixels[static_cast<std::size_t> (b)];
   if (!pcl::isXYZFinite (cloud[pa]) || !pcl::isXYZFinite (cloud[pb]))
     return false;
-  const Eigen::Vector3f from = cloud[pa].getVector3fMap(),
-                        step = cloud[pb].getVector3fMap() - from;
+  const Eigen::Vector3d from = cloud[pa].getVector3fMap().cast<double>(),
+                        step = cloud[pb].getVector3fMap().cast<double>() - from;
   const int u0 = pa % width, v0 = pa / width, u1 = pb % width, v1 = pb / width;
   const int n = std::max (std::abs (u1 - u0), std::abs (v1 - v0));
+  int run =
+      0; // valid pixels in a row behind the segment (pixels without depth skipped)
   for (int i = 1; i < n; ++i) {
     const int u = u0 + static_cast<int> (
                            std::lround (static_cast<double> (i * (u1 - u0)) / n)),
@@ -66,9 +70,12 @@ surfaceDropsBetween (const KeypointSurface& surface,
         cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
     if (!pcl::isXYZFinite (p))
       continue;
-    const float range = p.getVector3fMap().norm();
-    if (range > 0.0f &&
-        range - lineDepthAlongRay (from, step, p.getVector3fMap() / range) > min_drop)
+    const Eigen::Vector3d point = p.getVector3fMap().cast<double>();
+    const double range = point.norm();
+    const bool behind =
+        range > 0.0 && range - lineDepthAlongRay (from, step, point / range) > min_drop;
+    run = behind ? run + 1 : 0;
+    if (run >= std::max (min_pixels, 1))
       return true;
   }
   return false;

@@ -5,6 +5,7 @@
 #include <mid/discovery/multi_instance_discovery.h>
 
 #include <gtest/gtest.h>
+#include <pcl/common/io.h>
 
 #include <set>
 
@@ -220,6 +221,20 @@ TEST (MultiInstanceDiscovery, FindsTwoCopiesHeadToTailOnATable)
   keypoints_only.image_keypoints = result.image_keypoints;
   ASSERT_TRUE (mid::discoverFromKeypoints (mid::DiscoveryParameters(), keypoints_only));
   EXPECT_TRUE (keypoints_only.models.empty());
+
+  // Given the frame too, the keypoint route finds both; given a frame the keypoints were not
+  // found in, it refuses rather than silently leaving the surface out.
+  auto frame = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (*scene.cloud, *frame);
+  mid::DiscoveryResult with_frame = keypoints_only;
+  with_frame.timing_ms.clear();
+  ASSERT_TRUE (mid::discoverFromKeypoints (
+      mid::DiscoveryParameters(), with_frame, nullptr, frame));
+  ASSERT_EQ (with_frame.models.size(), 1u);
+  EXPECT_EQ (with_frame.models.front().instances.size(), 2u);
+  const auto small = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (32, 24);
+  EXPECT_FALSE (mid::discoverFromKeypoints (
+      mid::DiscoveryParameters(), with_frame, nullptr, small));
 }
 
 TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstances)

@@ -30,7 +30,11 @@ struct Copies
     std::uniform_real_distribution<float> x (0.005f, 0.065f), y (-0.005f, 0.005f),
         z (-0.09f, 0.09f);
     for (int i = 0; i < kPoints; ++i) {
-      const Eigen::Vector3f local (x (rng), y (rng), z (rng));
+      Eigen::Vector3f local;
+      local.x() =
+          x (rng); // one draw per statement: the same points with every compiler
+      local.y() = y (rng);
+      local.z() = z (rng);
       pcl::PointNormal point;
       point.getVector3fMap() = pose * local;
       keypoints->push_back (point);
@@ -251,9 +255,12 @@ struct CopiesApart
     return seen;
   }
 
-  /** The copies' upper faces (x in [0.5, 6.5] cm for copy 0, 20 cm to the left for copy 1). */
-  static constexpr mid::test::Plate kCopy0{0.005f, 0.065f, 0.81f, 0.99f, 0.095f},
-      kCopy1{-0.265f, -0.205f, 0.81f, 0.99f, 0.095f};
+  /** The copies' upper faces: 1 cm wider on each side than their keypoints (x in [0.5, 6.5]
+    * cm and z in [81, 99] cm for copy 0, 20 cm to the left for copy 1), so that every
+    * keypoint's pixel shows its own copy.
+    */
+  static constexpr mid::test::Plate kCopy0{-0.005f, 0.075f, 0.80f, 1.0f, 0.095f},
+      kCopy1{-0.275f, -0.195f, 0.80f, 1.0f, 0.095f};
 
   Copies scene;
   mid::TripletCluster half_turn;
@@ -293,7 +300,7 @@ TEST (CompoundSplitting, LeavesTwoPatchesOfOneSurfaceAlone)
   // with 21 cm free of keypoints between them. Its surface runs on between the patches.
   const CopiesApart patches;
   const mid::KeypointSurface one_object = patches.surface (
-      {{CopiesApart::kCopy1.x_min, CopiesApart::kCopy0.x_max, 0.81f, 0.99f, 0.095f}});
+      {{CopiesApart::kCopy1.x_min, CopiesApart::kCopy0.x_max, 0.80f, 1.0f, 0.095f}});
   EXPECT_TRUE (mid::orientHalfTurnCluster (patches.half_turn,
                                            {},
                                            *patches.scene.triplets,

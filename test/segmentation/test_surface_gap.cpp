@@ -84,13 +84,54 @@ TEST (SurfaceGap, IgnoresMissingDepth)
   const int width = mid::test::kPlateWidth;
   const pcl::index_t left = surface.keypoint_pixels[0],
                      right = surface.keypoint_pixels[1];
-  for (pcl::index_t p = left + 1; p < right; ++p) // the row between them (same v)
+  ASSERT_EQ (left / width, right / width); // the row between them (same v)
+  ASSERT_GT (right - left, 10);
+  for (pcl::index_t p = left + 1; p < right; ++p)
     (*cloud)[static_cast<std::size_t> (p)].z = NAN;
-  ASSERT_EQ (left / width, right / width);
-  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.001f));
+  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.001f, 1));
   // An end without depth gives no answer either.
   (*cloud)[static_cast<std::size_t> (right)].z = NAN;
-  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.001f));
+  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.001f, 1));
+}
+
+TEST (SurfaceGap, MissingDepthDoesNotBreakARunOfFloor)
+{
+  // Two plates 4 cm apart; every second pixel of the floor between them has no depth. The
+  // floor pixels left still make a run: a gap seen through a noisy sensor.
+  auto cloud = renderPlates (
+      {{-0.08f, -0.02f, 0.8f, 1.0f, kTop}, {0.02f, 0.08f, 0.8f, 1.0f, kTop}}, kFloor);
+  const auto surface = surfaceOf (cloud);
+  const pcl::index_t left = surface.keypoint_pixels[0],
+                     right = surface.keypoint_pixels[1];
+  int floor_pixels = 0;
+  for (pcl::index_t p = left + 1; p < right; ++p) {
+    pcl::PointXYZ& point = (*cloud)[static_cast<std::size_t> (p)];
+    if (point.y > kTop + 0.01f && ++floor_pixels % 2 == 0)
+      point.z = NAN;
+  }
+  ASSERT_GT (floor_pixels, 10);
+  EXPECT_TRUE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f, floor_pixels / 2));
+  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f, floor_pixels / 2 + 2));
+}
+
+TEST (SurfaceGap, ALonePixelBehindIsNotAGap)
+{
+  // One plate under both keypoints, with one or three pixels between them reading the
+  // floor's depth (a flying pixel, then a narrow slit).
+  auto cloud = renderPlates ({{-0.08f, 0.08f, 0.8f, 1.0f, kTop}}, kFloor);
+  const auto surface = surfaceOf (cloud);
+  const auto middle = static_cast<std::size_t> (
+      (surface.keypoint_pixels[0] + surface.keypoint_pixels[1]) / 2);
+  const auto seeFloor = [&cloud] (std::size_t p) {
+    (*cloud)[p].getVector3fMap() *= kFloor / kTop;
+  };
+  seeFloor (middle);
+  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f));
+  EXPECT_TRUE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f, 1));
+  seeFloor (middle + 1);
+  EXPECT_FALSE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f));
+  seeFloor (middle - 1);
+  EXPECT_TRUE (mid::surfaceDropsBetween (surface, 0, 1, 0.01f));
 }
 
 TEST (SurfaceGap, ChecksTheSurface)

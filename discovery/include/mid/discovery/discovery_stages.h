@@ -17,7 +17,9 @@ namespace mid {
   * result.image_keypoints giving their pixels (ImageKeypoint::pixel_index); optional: it lets
   * the clustering orient a half turn between two copies lying apart that no third copy
   * anchors (TransformationSpaceClustering::setKeypointSurface())
-  * \return false (with a PCL_ERROR) if a stage refuses its input or parameters
+  * \return false (with a PCL_ERROR) if a stage refuses its input or parameters, or if
+  * `organized` is given but result.image_keypoints do not give a pixel inside it for every
+  * keypoint
   */
 bool
 discoverFromKeypoints (

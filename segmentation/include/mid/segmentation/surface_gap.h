@@ -33,19 +33,24 @@ isValidKeypointSurface (const KeypointSurface& surface, std::size_t keypoints);
   * p, compares p's distance from the camera with that of the segment along p's viewing ray
   * (the point of the segment's line closest to the ray). The visible surface of one convex
   * object lies in front of every chord between two of its points, so it never drops; nor does
-  * a flat or gently curved face. Missing depth is ignored: it does not tell a border from a
-  * reflection.
+  * a flat or gently curved face. The drop must hold over `min_pixels` valid pixels in a row:
+  * a lone pixel behind the segment is more likely a flying pixel at a depth edge or a bad
+  * reading than a gap. Missing depth is ignored (it neither counts nor breaks a run): it
+  * does not tell a border from a reflection.
   * \param[in] surface a valid KeypointSurface (isValidKeypointSurface(); not checked)
   * \param[in] a one keypoint (index into the keypoint cloud)
   * \param[in] b another keypoint
   * \param[in] min_drop how far behind the segment (metres, along the viewing ray) the
   * surface must fall
+  * \param[in] min_pixels how many valid pixels in a row must fall that far (at least 1; 3
+  * pixels are 6 mm at 1 m for a 525-pixel focal length)
   * \return false if no pixel between them falls that far, or either end has no valid point
   */
 bool
 surfaceDropsBetween (const KeypointSurface& surface,
                      pcl::index_t a,
                      pcl::index_t b,
-                     float min_drop);
+                     float min_drop,
+                     int min_pixels = 3);
 
 } // namespace mid

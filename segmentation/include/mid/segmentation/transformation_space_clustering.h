@@ -190,8 +190,10 @@ public:
   /** \brief The organized frame behind the keypoints, and each keypoint's pixel in it: lets
     * the compound splitting orient a half turn between two copies lying apart that no third
     * copy anchors, where the surface shows the gap between them (orientHalfTurnCluster()).
-    * Unset by default (only anchors orient half turns); cluster() refuses one that is not
-    * organized or does not give a pixel inside it for every keypoint of the input cloud.
+    * Unset by default (only anchors orient half turns); a surface whose cloud is null counts
+    * as unset, whatever its pixels. Used only when the input and scene clouds are one frame
+    * (as the compound splitting is); cluster() refuses a set surface that is not organized or
+    * does not give a pixel inside it for every keypoint of the input cloud.
     */
   ///@{
   void
