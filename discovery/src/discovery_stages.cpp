@@ -212,11 +212,14 @@ mergeMatchingModels (const DiscoveryParameters& p,
   return true;
 }
 
+namespace {
+
+/** discoverFromKeypoints() without its cleanup on failure. */
 bool
-discoverFromKeypoints (const DiscoveryParameters& p,
-                       DiscoveryResult& result,
-                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-                       const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
+runStages (const DiscoveryParameters& p,
+           DiscoveryResult& result,
+           const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
+           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
 {
   if (!result.keypoints || !result.descriptors) {
     PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
@@ -293,6 +296,25 @@ discoverFromKeypoints (const DiscoveryParameters& p,
     resolveOverlaps (p, *result.keypoints, result.models);
   result.timing_ms.emplace_back ("detection", watch.getTime());
   return true;
+}
+
+} // namespace
+
+bool
+discoverFromKeypoints (const DiscoveryParameters& p,
+                       DiscoveryResult& result,
+                       const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
+                       const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
+{
+  const std::size_t timed = result.timing_ms.size();
+  if (runStages (p, result, surface, organized))
+    return true;
+  // No partial output: the stages' results go, the given keypoints and descriptors stay.
+  result.matches.clear();
+  result.triplets = result.clusters = 0;
+  result.models.clear();
+  result.timing_ms.resize (timed);
+  return false;
 }
 
 } // namespace mid

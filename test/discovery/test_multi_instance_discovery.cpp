@@ -233,8 +233,13 @@ TEST (MultiInstanceDiscovery, FindsTwoCopiesHeadToTailOnATable)
   ASSERT_EQ (with_frame.models.size(), 1u);
   EXPECT_EQ (with_frame.models.front().instances.size(), 2u);
   const auto small = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (32, 24);
+  const std::size_t timed = with_frame.timing_ms.size();
   EXPECT_FALSE (mid::discoverFromKeypoints (
       mid::DiscoveryParameters(), with_frame, nullptr, small));
+  EXPECT_TRUE (with_frame.models.empty()); // no partial output
+  EXPECT_TRUE (with_frame.matches.empty());
+  EXPECT_EQ (with_frame.timing_ms.size(), timed);
+  EXPECT_EQ (with_frame.keypoints, keypoints_only.keypoints);
 }
 
 TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstances)

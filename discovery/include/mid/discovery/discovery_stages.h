@@ -19,7 +19,8 @@ namespace mid {
   * anchors (TransformationSpaceClustering::setKeypointSurface())
   * \return false (with a PCL_ERROR) if a stage refuses its input or parameters, or if
   * `organized` is given but result.image_keypoints do not give a pixel inside it for every
-  * keypoint
+  * keypoint; then result's matches, counts and models are empty and timing_ms is as it came
+  * in (keypoints, descriptors and image keypoints stay)
   */
 bool
 discoverFromKeypoints (
