@@ -42,16 +42,26 @@ const char* kHalfTimed =
     {"pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[10, 10], [20, 20]]},
     {"pose": [[1, 0, 0, 0.1], [0, 1, 0, 0], [0, 0, 1, 0.8], [0, 0, 0, 1]], "keypoints": [[150, 10], [160, 20]]}]}]})";
 
+/** Writes the hand-built dataset (one scene folder, 000000, with kTruth and kInfo) to
+  * `folder`/dataset and returns that folder.
+  */
+std::filesystem::path
+writeDataset (const mid::test::TemporaryFolder& folder)
+{
+  const auto dataset = folder.path() / "dataset";
+  std::filesystem::create_directories (dataset / "000000");
+  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
+  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
+  return dataset;
+}
+
 } // namespace
 
 TEST (EvalApp, ScoresAPerfectAndAMissingResult)
 {
   const mid::test::TemporaryFolder folder;
-  const auto dataset = folder.path() / "dataset", results = folder.path() / "results";
-  std::filesystem::create_directories (dataset / "000000");
+  const auto dataset = writeDataset (folder), results = folder.path() / "results";
   std::filesystem::create_directories (results / "000000");
-  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
-  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
   std::ofstream (dataset / "scenarios.json") << R"({"000000": "S_ez"})";
   std::ofstream (results / "000000" / "000000.json")
       << kPerfect; // frame 1 has no result
@@ -89,11 +99,8 @@ TEST (EvalApp, RefusesUnusableFolders)
 TEST (EvalApp, RefusesUnknownOptionsAndMissingValues)
 {
   const mid::test::TemporaryFolder folder;
-  const auto dataset = folder.path() / "dataset", results = folder.path() / "results";
-  std::filesystem::create_directories (dataset / "000000");
+  const auto dataset = writeDataset (folder), results = folder.path() / "results";
   std::filesystem::create_directories (results / "000000");
-  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
-  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
   const std::string command =
       std::string (MID_EVAL_APP) + " " + dataset.string() + " " + results.string();
   for (const auto& [options, message] :
@@ -118,10 +125,7 @@ TEST (EvalApp, RefusesUnknownOptionsAndMissingValues)
 TEST (EvalApp, PutsMethodsSideBySide)
 {
   const mid::test::TemporaryFolder folder;
-  const auto dataset = folder.path() / "dataset";
-  std::filesystem::create_directories (dataset / "000000");
-  std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
-  std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
+  const auto dataset = writeDataset (folder);
   for (const char* method : {"ours", "peer"}) {
     std::filesystem::create_directories (folder.path() / method / "000000");
     for (const char* image : {"000000.json", "000001.json"})
