@@ -48,7 +48,7 @@ const char* kHalfTimed =
 std::filesystem::path
 writeDataset (const mid::test::TemporaryFolder& folder)
 {
-  const auto dataset = folder.path() / "dataset";
+  auto dataset = folder.path() / "dataset";
   std::filesystem::create_directories (dataset / "000000");
   std::ofstream (dataset / "000000" / "scene_gt.json") << kTruth;
   std::ofstream (dataset / "000000" / "scene_gt_info.json") << kInfo;
