@@ -59,8 +59,8 @@ surfaceDropsBetween (const KeypointSurface& surface,
                         step = cloud[pb].getVector3fMap().cast<double>() - from;
   const int u0 = pa % width, v0 = pa / width, u1 = pb % width, v1 = pb / width;
   const int n = std::max (std::abs (u1 - u0), std::abs (v1 - v0));
-  int run =
-      0; // valid pixels in a row behind the segment (pixels without depth skipped)
+  // Valid pixels in a row behind the segment (pixels without depth skipped).
+  int run = 0;
   for (int i = 1; i < n; ++i) {
     const int u = u0 + static_cast<int> (
                            std::lround (static_cast<double> (i * (u1 - u0)) / n)),

@@ -42,9 +42,10 @@ isValidKeypointSurface (const KeypointSurface& surface, std::size_t keypoints);
   * \param[in] b another keypoint
   * \param[in] min_drop how far behind the segment (metres, along the viewing ray) the
   * surface must fall
-  * \param[in] min_pixels how many valid pixels in a row must fall that far (at least 1; 3
-  * pixels are 6 mm at 1 m for a 525-pixel focal length)
-  * \return false if no pixel between them falls that far, or either end has no valid point
+  * \param[in] min_pixels how many valid pixels in a row must fall that far (values below 1
+  * count as 1; 3 pixels are 6 mm at 1 m for a 525-pixel focal length)
+  * \return false if no min_pixels valid pixels in a row between them fall that far, or either
+  * end has no valid point
   */
 bool
 surfaceDropsBetween (const KeypointSurface& surface,
