@@ -11,11 +11,14 @@ namespace mid {
 
 namespace {
 
-/** Centroid and RMS radius of an instance's observed keypoints. */
+/** Centroid, RMS radius and mean normal (unit, zero if the normals cancel out) of an
+  * instance's observed keypoints.
+  */
 struct Footprint
 {
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
   float radius = 0.0f;
+  Eigen::Vector3f normal = Eigen::Vector3f::Zero();
   bool valid = false;
 };
 
@@ -25,8 +28,12 @@ footprintOf (const KeypointCloud& keypoints, const ModelInstance& instance)
   Footprint footprint;
   if (instance.keypoints.empty())
     return footprint;
-  for (const auto k : instance.keypoints)
+  for (const auto k : instance.keypoints) {
     footprint.centroid += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+    footprint.normal += keypoints[static_cast<std::size_t> (k)].getNormalVector3fMap();
+  }
+  footprint.normal = footprint.normal.norm() > 1e-3f ? footprint.normal.normalized()
+                                                     : Eigen::Vector3f::Zero();
   footprint.centroid /= static_cast<float> (instance.keypoints.size());
   float sum = 0.0f;
   for (const auto k : instance.keypoints)
@@ -84,27 +91,31 @@ sameLandmarks (const ObjectModel& into, const ObjectModel& from)
   return pairs;
 }
 
-/** Merge `from` into `into` through the overlapping instance pair with most observations;
-  * false if no pair overlaps.
+/** Merge `from` into `into` through one instance pair on one physical copy: an overlapping
+  * pair if there is one, else an adjoining one, the one with most observations first; false
+  * if no pair overlaps or adjoins.
   */
 bool
-mergeIfOverlapping (const KeypointCloud& keypoints,
-                    ObjectModel& into,
-                    const ObjectModel& from)
+mergeThroughSharedCopy (const KeypointCloud& keypoints,
+                        ObjectModel& into,
+                        const ObjectModel& from)
 {
   const ModelInstance* best_into = nullptr;
   const ModelInstance* best_from = nullptr;
-  std::size_t best_size = 0;
+  std::pair<bool, std::size_t> best_rank (false, 0);
   for (const auto& a : into.instances)
-    for (const auto& b : from.instances)
-      if (a.keypoints.size() + b.keypoints.size() > best_size &&
-          instancesOverlap (keypoints, a, b)) {
+    for (const auto& b : from.instances) {
+      const std::pair<bool, std::size_t> rank (instancesOverlap (keypoints, a, b),
+                                               a.keypoints.size() + b.keypoints.size());
+      if (rank > best_rank && (rank.first || instancesAdjoin (keypoints, a, b))) {
         best_into = &a;
         best_from = &b;
-        best_size = a.keypoints.size() + b.keypoints.size();
+        best_rank = rank;
       }
+    }
   if (!best_into)
     return false;
+  const auto linked = static_cast<std::ptrdiff_t> (best_into - into.instances.data());
   // from's frame -> camera -> into's frame.
   const Eigen::Matrix4f from_to_into = best_into->pose.inverse() * best_from->pose;
   const auto same = sameLandmarks (into, from);
@@ -119,12 +130,15 @@ mergeIfOverlapping (const KeypointCloud& keypoints,
     moved.pose = b.pose * from_to_into.inverse();
     for (auto& l : moved.landmarks)
       l = landmark_of[static_cast<std::size_t> (l)];
-    auto joined = std::find_if (into.instances.begin(),
-                                into.instances.begin() +
-                                    static_cast<std::ptrdiff_t> (old_instances),
-                                [&] (const ModelInstance& a) {
-                                  return instancesOverlap (keypoints, a, moved);
-                                });
+    // The linking pair is one copy by definition; any other instance joins one it overlaps.
+    auto joined = &b == best_from
+                      ? into.instances.begin() + linked
+                      : std::find_if (into.instances.begin(),
+                                      into.instances.begin() +
+                                          static_cast<std::ptrdiff_t> (old_instances),
+                                      [&] (const ModelInstance& a) {
+                                        return instancesOverlap (keypoints, a, moved);
+                                      });
     if (joined != into.instances.begin() + static_cast<std::ptrdiff_t> (old_instances))
       joinInstance (*joined, moved);
     else
@@ -146,6 +160,20 @@ instancesOverlap (const KeypointCloud& keypoints,
   if (!fa.valid || !fb.valid)
     return false;
   return (fa.centroid - fb.centroid).norm() < std::max (fa.radius, fb.radius);
+}
+
+bool
+instancesAdjoin (const KeypointCloud& keypoints,
+                 const ModelInstance& a,
+                 const ModelInstance& b,
+                 float min_angle)
+{
+  const Footprint fa = footprintOf (keypoints, a), fb = footprintOf (keypoints, b);
+  if (!fa.valid || !fb.valid || fa.normal.isZero() || fb.normal.isZero())
+    return false;
+  const float cos_angle = std::clamp (fa.normal.dot (fb.normal), -1.0f, 1.0f);
+  return (fa.centroid - fb.centroid).norm() < fa.radius + fb.radius &&
+         std::acos (cos_angle) >= min_angle;
 }
 
 std::size_t
@@ -185,7 +213,7 @@ mergeOverlappingModels (const KeypointCloud& keypoints, ObjectModels& models)
   std::size_t merged = 0;
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = i + 1; j < models.size();) {
-      if (mergeIfOverlapping (keypoints, models[i], models[j])) {
+      if (mergeThroughSharedCopy (keypoints, models[i], models[j])) {
         models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
         ++merged;
       }

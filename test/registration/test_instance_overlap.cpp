@@ -11,9 +11,13 @@ namespace {
 using mid::test::poseError;
 using mid::test::rigidMotion;
 
-constexpr int kLandmarks = 20;
+/** Points on the object's top face (landmarks 0-19); landmarks 20-39 lie on a side face. */
+constexpr int kFace = 20;
+constexpr int kLandmarks = 2 * kFace;
 
-/** Three copies of one object (20 points on a 10 x 8 cm face) at known poses, 20 cm apart. */
+/** Three copies of one box at known poses, 20 cm apart: 20 points with their normals on its
+  * 10 x 8 cm top face (facing the camera), 20 on a 10 x 6 cm side face perpendicular to it.
+  */
 class InstanceOverlap : public ::testing::Test
 {
 protected:
@@ -21,19 +25,60 @@ protected:
   SetUp () override
   {
     std::mt19937 rng (5);
-    std::uniform_real_distribution<float> x (-0.05f, 0.05f), y (-0.04f, 0.04f);
-    for (int l = 0; l < kLandmarks; ++l)
-      object_.emplace_back (x (rng), y (rng), 0.0f);
+    std::uniform_real_distribution<float> x (-0.05f, 0.05f), y (-0.04f, 0.04f),
+        z (0.0f, 0.06f);
+    for (int l = 0; l < kFace; ++l) {
+      const float px = x (rng), py = y (rng);
+      object_.emplace_back (px, py, 0.0f);
+      normals_.emplace_back (0.0f, 0.0f, -1.0f);
+    }
+    for (int l = 0; l < kFace; ++l) {
+      const float px = x (rng), pz = z (rng);
+      object_.emplace_back (px, 0.04f, pz);
+      normals_.emplace_back (0.0f, 1.0f, 0.0f);
+    }
     poses_ = {rigidMotion (Eigen::Vector3f (-0.2f, 0.0f, 0.8f), 0.3f).matrix(),
               rigidMotion (Eigen::Vector3f (0.0f, 0.05f, 0.85f), -0.8f).matrix(),
               rigidMotion (Eigen::Vector3f (0.2f, 0.0f, 0.8f), 1.9f).matrix()};
     for (const auto& pose : poses_)
-      for (const auto& p : object_) {
+      for (std::size_t l = 0; l < object_.size(); ++l) {
         pcl::PointNormal k;
         k.getVector3fMap() =
-            pose.topLeftCorner<3, 3>() * p + pose.topRightCorner<3, 1>();
+            pose.topLeftCorner<3, 3>() * object_[l] + pose.topRightCorner<3, 1>();
+        k.getNormalVector3fMap() = pose.topLeftCorner<3, 3>() * normals_[l];
         keypoints_.push_back (k);
       }
+  }
+
+  /** Expect one instance on each copy, each pose mapping every landmark it observes exactly
+    * onto its keypoint, and the instance on copy `full` observing all of `full_size` keypoints.
+    */
+  void
+  expectExactInstances (const mid::ObjectModel& model,
+                        int full,
+                        std::size_t full_size) const
+  {
+    ASSERT_EQ (model.instances.size(), poses_.size());
+    std::vector<bool> found (poses_.size(), false);
+    for (const auto& instance : model.instances) {
+      for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+        const Eigen::Vector3f landmark =
+            model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
+                .getVector3fMap();
+        const Eigen::Vector3f moved = instance.pose.topLeftCorner<3, 3>() * landmark +
+                                      instance.pose.topRightCorner<3, 1>();
+        EXPECT_LT ((moved - keypoints_[static_cast<std::size_t> (instance.keypoints[o])]
+                                .getVector3fMap())
+                       .norm(),
+                   1e-5f);
+      }
+      const int copy = instance.keypoints.front() / kLandmarks;
+      found[static_cast<std::size_t> (copy)] = true;
+      if (copy == full) {
+        EXPECT_EQ (instance.keypoints.size(), full_size);
+      }
+    }
+    EXPECT_EQ (found, std::vector<bool> (poses_.size(), true));
   }
 
   /** A model of landmarks [first, last) in a frame moved by `frame` from the object's, with
@@ -68,6 +113,7 @@ protected:
   }
 
   std::vector<Eigen::Vector3f> object_;
+  std::vector<Eigen::Vector3f> normals_;
   std::vector<Eigen::Matrix4f> poses_;
   mid::KeypointCloud keypoints_;
 };
@@ -98,6 +144,28 @@ TEST_F (InstanceOverlap, KeypointsOfOneCopyOverlapThoseOfAnotherDoNot)
       mid::instancesOverlap (keypoints_, mid::ModelInstance(), instanceOn (0, 0, 20)));
 }
 
+TEST_F (InstanceOverlap, TwoFacesOfOneCopyAdjoinParallelOrDistantOnesDoNot)
+{
+  const auto top = [] (int copy) { return instanceOn (copy, 0, kFace); };
+  const auto side = [] (int copy) { return instanceOn (copy, kFace, kLandmarks); };
+  // The top and the side of one copy meet at an edge without intermixing.
+  EXPECT_TRUE (mid::instancesAdjoin (keypoints_, top (1), side (1)));
+  EXPECT_FALSE (mid::instancesOverlap (keypoints_, top (1), side (1)));
+  // Faces of two copies 20 cm apart are too far.
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, top (0), side (1)));
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, side (1), top (2)));
+  // Two sets of one face's keypoints meet but face the same way (as copies side by side do); with no
+  // angle asked for they adjoin.
+  const auto left = instanceOn (1, 0, kFace / 2),
+             right = instanceOn (1, kFace / 2, kFace);
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, left, right));
+  EXPECT_TRUE (mid::instancesAdjoin (keypoints_, left, right, 0.0f));
+  // The faces are 90 deg apart.
+  EXPECT_TRUE (mid::instancesAdjoin (keypoints_, top (1), side (1), 1.5f));
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, top (1), side (1), 1.6f));
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, mid::ModelInstance(), side (1)));
+}
+
 TEST_F (InstanceOverlap, KeepsTheLargerOfTwoInstancesOnOneCopy)
 {
   mid::ObjectModel model =
@@ -114,47 +182,41 @@ TEST_F (InstanceOverlap, KeepsTheLargerOfTwoInstancesOnOneCopy)
 
 TEST_F (InstanceOverlap, MergesTwoModelsOfOneObjectIntoTheTruePoses)
 {
-  // Model A knows landmarks 0-11 on copies 0 and 1; model B, in another frame, knows landmarks
-  // 8-19 on copies 1 and 2. They share copy 1 (and landmarks 8-11).
+  // Model A knows landmarks 0-11 of the top face on copies 0 and 1; model B, in another frame,
+  // knows landmarks 8-19 on copies 1 and 2. They share copy 1 (and landmarks 8-11).
   const Eigen::Matrix4f frame_b = rigidMotion (Eigen::Vector3f (0.3f, -0.1f, 0.02f),
                                                1.1f,
                                                Eigen::Vector3f (1, 2, 3))
                                       .matrix();
   mid::ObjectModels models{modelOf (0, 12, Eigen::Matrix4f::Identity(), {0, 1}),
-                           modelOf (8, kLandmarks, frame_b, {1, 2})};
+                           modelOf (8, kFace, frame_b, {1, 2})};
   EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 1u);
   ASSERT_EQ (models.size(), 1u);
-  const auto& model = models.front();
-  EXPECT_EQ (model.landmarks.size(), static_cast<std::size_t> (kLandmarks));
-  ASSERT_EQ (model.instances.size(), 3u);
-  // The copies in any order; each pose maps every landmark onto its keypoint.
-  std::vector<bool> found (3, false);
-  for (const auto& instance : model.instances) {
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
-      const Eigen::Vector3f landmark =
-          model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
-              .getVector3fMap();
-      const Eigen::Vector3f moved = instance.pose.topLeftCorner<3, 3>() * landmark +
-                                    instance.pose.topRightCorner<3, 1>();
-      EXPECT_LT ((moved - keypoints_[static_cast<std::size_t> (instance.keypoints[o])]
-                              .getVector3fMap())
-                     .norm(),
-                 1e-5f);
-    }
-    found[static_cast<std::size_t> (instance.keypoints.front() / kLandmarks)] = true;
-  }
-  EXPECT_EQ (found, std::vector<bool> (3, true));
+  EXPECT_EQ (models.front().landmarks.size(), static_cast<std::size_t> (kFace));
   // The instance on copy 1 holds the observations of both models.
-  for (const auto& instance : model.instances)
-    if (instance.keypoints.front() / kLandmarks == 1) {
-      EXPECT_EQ (instance.keypoints.size(), static_cast<std::size_t> (kLandmarks));
-    }
+  expectExactInstances (models.front(), 1, kFace);
+}
+
+TEST_F (InstanceOverlap, MergesModelsOfTwoFacesThroughTheCopyThatShowsBoth)
+{
+  // Model A knows the top face on copies 0 and 1; model B, in another frame, the side face on
+  // copies 1 and 2. No keypoint or descriptor links them, only copy 1, which shows both.
+  const Eigen::Matrix4f frame_b = rigidMotion (Eigen::Vector3f (-0.2f, 0.1f, 0.05f),
+                                               2.0f,
+                                               Eigen::Vector3f (3, -1, 2))
+                                      .matrix();
+  mid::ObjectModels models{modelOf (0, kFace, Eigen::Matrix4f::Identity(), {0, 1}),
+                           modelOf (kFace, kLandmarks, frame_b, {1, 2})};
+  EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 1u);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models.front().landmarks.size(), static_cast<std::size_t> (kLandmarks));
+  expectExactInstances (models.front(), 1, kLandmarks);
 }
 
 TEST_F (InstanceOverlap, LeavesModelsOfDifferentCopiesApart)
 {
   mid::ObjectModels models{modelOf (0, 12, Eigen::Matrix4f::Identity(), {0, 1}),
-                           modelOf (8, kLandmarks, Eigen::Matrix4f::Identity(), {2})};
+                           modelOf (8, kFace, Eigen::Matrix4f::Identity(), {2})};
   EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 0u);
   EXPECT_EQ (models.size(), 2u);
 }

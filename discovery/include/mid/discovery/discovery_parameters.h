@@ -139,8 +139,9 @@ struct DiscoveryParameters
   float merge_fraction = 0.3f;
   ///@}
   /** \brief Resolve instances that lie on one physical object (not in the paper; see
-    * instancesOverlap()): models with such instances are merged, and of two overlapping
-    * instances of one model only the one with more keypoints is kept. A model left with one
+    * instancesOverlap() and instancesAdjoin()): models with such instances (overlapping, or
+    * two faces of one copy) are merged, and of two overlapping instances of one model only
+    * the one with more keypoints is kept. A model left with one
     * instance is dropped (one copy alone is no discovery).
     */
   bool resolve_overlaps = true;

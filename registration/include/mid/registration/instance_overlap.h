@@ -2,6 +2,8 @@
 
 #include <mid/registration/object_model.h>
 
+#include <cmath>
+
 namespace mid {
 
 /** \brief True if two instances lie on one physical object: the centroid of their observed
@@ -23,6 +25,32 @@ instancesOverlap (const KeypointCloud& keypoints,
                   const ModelInstance& a,
                   const ModelInstance& b);
 
+/** \brief True if two instances look like two faces of one physical copy: their keypoint
+  * footprints meet (the centroids of their observed keypoints are closer than the sum of their
+  * RMS radii) and they face different ways (the mean normals of their keypoints differ by at
+  * least min_angle).
+  *
+  * Looser than instancesOverlap() in distance: the keypoints of two faces of one copy (the top
+  * and a side of a box) adjoin without intermixing. With keypoints spread evenly over the
+  * faces, their centroids lie 0.45 sums of radii apart on the top and long side of a
+  * 20 x 10 x 5 cm box, 0.87 on two faces of a cube. The same faces of two copies side by side
+  * lie 1.22 sums apart when square, but only 0.77 when twice as long as wide and touching
+  * along their long sides; such copies rest the same way up and show parallel faces, which
+  * the angle tells apart.
+  * \param[in] keypoints the frame's keypoints, which the instances index (with normals)
+  * \param[in] a one instance (its keypoints)
+  * \param[in] b the other instance
+  * \param[in] min_angle the mean normals must differ by at least this (radians; default
+  * 45 deg, half way between the parallel faces of copies side by side and the perpendicular
+  * faces of a box)
+  * \return false if either instance observes no keypoint or its normals cancel out
+  */
+bool
+instancesAdjoin (const KeypointCloud& keypoints,
+                 const ModelInstance& a,
+                 const ModelInstance& b,
+                 float min_angle = static_cast<float> (M_PI / 4.0));
+
 /** \brief Remove the instances of a model that lie on the same physical object as an instance
   * observing at least as many keypoints (on a tie the earlier instance stays) (an object with a repeated pattern on one face, such as two
   * copies of a logo, gives such pairs); the remaining instances keep their order.
@@ -33,17 +61,20 @@ instancesOverlap (const KeypointCloud& keypoints,
 std::size_t
 removeOverlappingInstances (const KeypointCloud& keypoints, ObjectModel& model);
 
-/** \brief Merge models of which an instance lies on an instance of another model: both then
-  * describe the same object, seen on one physical copy, and the pose of each instance gives
-  * the transform between the two model frames.
+/** \brief Merge models of which an instance lies on the same physical copy as an instance of
+  * another model: both then describe the same object, and the pose of each instance gives the
+  * transform between the two model frames.
   *
-  * Models are visited largest first (most observations); a smaller model B that overlaps a
-  * larger model A (some instance pair overlaps, see instancesOverlap()) is brought into A's
-  * frame by the overlapping pair with the most observations, landmarks of B observed by a
-  * keypoint that also observes a landmark of A become that landmark, B's instances that overlap an
-  * instance of A join it (their keypoints are added to it), the others become new instances of
-  * A. Complements appearance-based merging: the two models may share no descriptor at all when
-  * they were built from different keypoints of the same face.
+  * Models are visited largest first (most observations). A smaller model B is merged into a
+  * larger model A through one pair of instances taken as one copy: the pair that overlaps
+  * (instancesOverlap()) with the most observations, or without one the pair that adjoins
+  * (instancesAdjoin()) with the most observations. B is brought into A's frame by that pair;
+  * landmarks of B observed by a keypoint that also observes a landmark of A become that
+  * landmark; B's instance of the pair joins A's (their keypoints are added to it), B's other
+  * instances join an instance of A they overlap, or else become new instances of A.
+  * Complements appearance-based merging: the two models may share no descriptor at all when
+  * they were built from different keypoints of one face (overlapping instances) or from two
+  * faces of the object that only one copy shows together (adjoining instances).
   * \param[in] keypoints the frame's keypoints, which the instances index
   * \param[in,out] models the models; merged ones are removed
   * \return the number of models merged into others
