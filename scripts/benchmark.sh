@@ -77,7 +77,12 @@ run_discovery() {
 export -f run_discovery
 export APPS
 
-count=$(find "$OUT/dataset" -path '*/pcd/*.pcd' | wc -l)
+# -L: the dataset folder may be a symbolic link to one written elsewhere.
+count=$(find -L "$OUT/dataset" -path '*/pcd/*.pcd' | wc -l)
+if [ "$count" -eq 0 ]; then
+  echo "benchmark.sh: no frames (<scene>/pcd/<image>.pcd) in $OUT/dataset" >&2
+  exit 1
+fi
 folders=()
 for method in $METHODS; do
   OPTIONS=$(method_options "$method")
@@ -86,8 +91,8 @@ for method in $METHODS; do
   export OPTIONS RESULTS
   folders+=("$RESULTS")
   echo "=== discovery ($method${OPTIONS:+: $OPTIONS}) on $count frames ($JOBS at a time)"
-  find "$OUT/dataset" -path '*/pcd/*.pcd' -print0 | sort -z |
-    xargs -0 -n 1 -P "$JOBS" bash -c 'run_discovery "$1"' _
+  find -L "$OUT/dataset" -path '*/pcd/*.pcd' -print0 | sort -z |
+    xargs -0 -r -n 1 -P "$JOBS" bash -c 'run_discovery "$1"' _
 done
 discovered=$(date +%s)
 
