@@ -51,6 +51,7 @@ struct Options
   std::uint32_t seed = 1;
   int frames = 10;
   int supersampling = 3;
+  int instances_per_type = 0;
   double preview_scale = 0.5;
   /** The scenarios of -scenarios, in order: scene folder i holds the i-th. */
   std::vector<BenchmarkScenario> scenario_list;
@@ -66,7 +67,8 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-preview_scale", 1},
                                       {"-seed", 1},
                                       {"-frames", 1},
-                                      {"-supersampling", 1}};
+                                      {"-supersampling", 1},
+                                      {"-instances_per_type", 1}};
 
 void
 printHelp (const char* program)
@@ -86,6 +88,11 @@ printHelp (const char* program)
       ")\n  -scenarios LIST     comma-separated, of S-ez S-d M-ez M-d rows none "
       "(default ");
   print_value ("%s", defaults.scenarios.c_str());
+  print_info (
+      ")\n  -instances_per_type N  copies of each repeated product in S-ez, S-d, M-ez, "
+      "M-d:\n                      0 = drawn (2 to 9), 2 = the paper's pair "
+      "subset, up to 9 (default ");
+  print_value ("%d", defaults.instances_per_type);
   print_info (")\n  -texture_dir DIR    folder with the product photographs (default ");
   print_value ("%s", defaults.texture_dir.c_str());
   print_info (")\n  -sensor NAME        kinect (Kinect v1-like noise, holes) or exact "
@@ -143,12 +150,21 @@ parseOptions (int argc, char** argv, Options& options)
     return false;
   using pcl::console::parse_argument;
   long seed = options.seed, frames = options.frames,
-       supersampling = options.supersampling;
+       supersampling = options.supersampling,
+       instances_per_type = options.instances_per_type;
   if (!mid::apps::parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
       !mid::apps::parseIntegerOption (argc, argv, "-frames", 1, 1000, frames) ||
       !mid::apps::parseIntegerOption (
-          argc, argv, "-supersampling", 1, 4, supersampling))
+          argc, argv, "-supersampling", 1, 4, supersampling) ||
+      !mid::apps::parseIntegerOption (
+          argc, argv, "-instances_per_type", 0, 9, instances_per_type))
     return false;
+  if (instances_per_type == 1) {
+    print_error ("-instances_per_type must be 0 (drawn) or 2 to 9: one copy does not "
+                 "repeat.\n");
+    return false;
+  }
+  options.instances_per_type = static_cast<int> (instances_per_type);
   options.seed = static_cast<std::uint32_t> (seed);
   options.frames = static_cast<int> (frames);
   options.supersampling = static_cast<int> (supersampling);
@@ -406,6 +422,7 @@ run (int argc, char** argv)
       mid::simulation::BenchmarkFrameOptions frame_options;
       frame_options.scene.scenario = scenario;
       frame_options.scene.seed = frameSeed (options.seed, scenario, image);
+      frame_options.scene.instances_per_type = options.instances_per_type;
       frame_options.supersampling = options.supersampling;
       frame_options.sensor_noise = options.sensor == "kinect";
       mid::simulation::BenchmarkFrame frame;

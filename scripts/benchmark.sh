@@ -12,6 +12,9 @@
 #   MID_BENCHMARK_SCENARIOS     comma-separated scenarios (S-ez,S-d,M-ez,M-d,rows,none)
 #   MID_BENCHMARK_SEED          seed of the dataset (1)
 #   MID_BENCHMARK_SUPERSAMPLING colour rays per pixel along each axis (3)
+#   MID_BENCHMARK_INSTANCES_PER_TYPE  copies of each repeated product in S-ez, S-d, M-ez and
+#                               M-d (0: drawn, 2 to 9); 2 with MID_BENCHMARK_SCENARIOS=S-ez,
+#                               S-d,M-ez,M-d gives the paper's pair subset (doc/benchmark.md)
 #   MID_JOBS                    discovery runs in parallel, and build jobs (2)
 #   MID_BENCHMARK_METHODS       space-separated groupings to run on the same frames (triplets):
 #                               triplets (ours), gcg (pcl::GeometricConsistencyGrouping),
@@ -27,6 +30,7 @@ FRAMES=${MID_BENCHMARK_FRAMES:-20}
 SCENARIOS=${MID_BENCHMARK_SCENARIOS:-S-ez,S-d,M-ez,M-d,rows,none}
 SEED=${MID_BENCHMARK_SEED:-1}
 SUPERSAMPLING=${MID_BENCHMARK_SUPERSAMPLING:-3}
+INSTANCES=${MID_BENCHMARK_INSTANCES_PER_TYPE:-0}
 JOBS=${MID_JOBS:-2}
 METHODS=${MID_BENCHMARK_METHODS:-triplets}
 KEEP_DATASET=${MID_BENCHMARK_KEEP_DATASET:-0}
@@ -54,9 +58,10 @@ if [ "$KEEP_DATASET" = 1 ] && [ -d "$OUT/dataset" ]; then
   echo "=== dataset: reusing $OUT/dataset"
 else
   rm -rf "$OUT/dataset"
-  echo "=== dataset: $SCENARIOS, $FRAMES frames each, seed $SEED"
+  echo "=== dataset: $SCENARIOS, $FRAMES frames each, seed $SEED, copies per type $INSTANCES (0: drawn)"
   "$APPS/pcl_multi_instance_bench_synth" -texture_dir data/textures -out_dir "$OUT/dataset" \
-    -frames "$FRAMES" -seed "$SEED" -scenarios "$SCENARIOS" -supersampling "$SUPERSAMPLING"
+    -frames "$FRAMES" -seed "$SEED" -scenarios "$SCENARIOS" -supersampling "$SUPERSAMPLING" \
+    -instances_per_type "$INSTANCES"
 fi
 generated=$(date +%s)
 

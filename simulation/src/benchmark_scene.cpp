@@ -114,8 +114,13 @@ drawCount (int low, int high, DeterministicRandom& random)
   return low + random.uniformInt (high - low + 1);
 }
 
+/** The products, their counts and resting poses of one scene (`instances_per_type`: see
+  * BenchmarkSceneOptions; the count is drawn even when fixed, so that the products and the
+  * first resting poses stay those of the drawn scene).
+  */
 Composition
 drawComposition (BenchmarkScenario scenario,
+                 int instances_per_type,
                  const ProductCatalog& catalog,
                  DeterministicRandom& random)
 {
@@ -139,8 +144,12 @@ drawComposition (BenchmarkScenario scenario,
   case BenchmarkScenario::MULTI_DIFFICULT: {
     const int types = single ? 1 : drawCount (2, 3, random);
     const int most = single ? 9 : (types == 2 ? 6 : 4);
-    for (const int id : drawProducts (catalog, kRepeatable, types, random, taken))
-      add (id, drawCount (2, most, random), easy);
+    for (const int id : drawProducts (catalog, kRepeatable, types, random, taken)) {
+      const int drawn = drawCount (2, most, random);
+      add (id,
+           instances_per_type > 0 ? std::min (instances_per_type, most) : drawn,
+           easy);
+    }
     if (!easy) {
       const int distractors = drawCount (1, single ? 3 : 2, random);
       for (const int id :
@@ -298,6 +307,12 @@ makeBenchmarkScene (const BenchmarkSceneOptions& options,
     return fail ("the catalog must hold the products of makeProductCatalog()",
                  scene,
                  product_ids);
+  if (options.instances_per_type != 0 &&
+      (options.instances_per_type < 2 || options.instances_per_type > 9))
+    return fail ("instances_per_type must be 0 (drawn) or 2 to 9, got " +
+                     std::to_string (options.instances_per_type),
+                 scene,
+                 product_ids);
 
   DeterministicRandom random (options.seed, kSceneStream);
   PlacementView view;
@@ -313,7 +328,8 @@ makeBenchmarkScene (const BenchmarkSceneOptions& options,
   std::vector<Footprint> layout;
   bool placed = false;
   for (int attempt = 0; attempt < kMaxCompositions && !placed; ++attempt) {
-    composition = drawComposition (options.scenario, catalog, random);
+    composition =
+        drawComposition (options.scenario, options.instances_per_type, catalog, random);
     placed = layoutComposition (
         options.scenario, composition, catalog, view, random, layout);
   }

@@ -23,6 +23,26 @@ set(args -seed 4 -frames 2 -scenarios rows,S-d)
 run_app(first ${args} -preview ${WORK_DIR}/first/preview.png -preview_scale 0.25)
 run_app(second ${args})
 
+# -instances_per_type 2: every repeated product of an S-d frame appears exactly twice.
+run_app(pairs -seed 4 -frames 1 -scenarios S-d -instances_per_type 2)
+file(READ ${WORK_DIR}/pairs/000000/scene_gt.json pair_gt)
+string(REGEX MATCHALL "\"obj_id\": [0-9]+" pair_ids "${pair_gt}")
+list(SORT pair_ids)
+set(repeated_twice FALSE)
+list(REMOVE_DUPLICATES pair_ids)
+foreach(id ${pair_ids})
+  string(REGEX MATCHALL "${id}[,}]" copies "${pair_gt}")
+  list(LENGTH copies count)
+  if(count GREATER 2)
+    message(FATAL_ERROR "${id} appears ${count} times in a pair frame:\n${pair_gt}")
+  elseif(count EQUAL 2)
+    set(repeated_twice TRUE)
+  endif()
+endforeach()
+if(NOT repeated_twice)
+  message(FATAL_ERROR "no product appears twice in a pair frame:\n${pair_gt}")
+endif()
+
 # The BOP layout: scene 000000 holds the rows frames, 000001 the S-d ones.
 foreach(name scenarios.json models_info.json camera.json preview.png
              000000/scene_camera.json 000000/scene_gt.json 000000/scene_gt_info.json
@@ -83,6 +103,8 @@ expect_failure("scenario twice" ${bad} -scenarios rows,rows)
 expect_failure("no frames" ${bad} -frames 0)
 expect_failure("bad seed" ${bad} -seed 1x)
 expect_failure("bad preview scale" ${bad} -preview ${bad}.png -preview_scale 2)
+expect_failure("one copy per type" ${bad} -instances_per_type 1)
+expect_failure("ten copies per type" ${bad} -instances_per_type 10)
 expect_failure("unknown option" ${bad} -bogus 1)
 expect_failure("missing value" ${bad} -frames)
 expect_failure("unwritable preview" ${bad} -frames 1 -scenarios none -supersampling 1

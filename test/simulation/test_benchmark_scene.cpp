@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -72,11 +73,13 @@ pairDistances (const Scene& scene)
 Scene
 makeScene (BenchmarkScenario scenario,
            std::uint32_t seed,
-           std::vector<int>& product_ids)
+           std::vector<int>& product_ids,
+           int instances_per_type = 0)
 {
   BenchmarkSceneOptions options;
   options.scenario = scenario;
   options.seed = seed;
+  options.instances_per_type = instances_per_type;
   Scene scene;
   EXPECT_TRUE (makeBenchmarkScene (options, catalog(), scene, product_ids));
   return scene;
@@ -273,6 +276,55 @@ TEST (SimulationBenchmarkScene, SameSeedSameSceneOtherSeedOtherScene)
       b.getBackgroundObjects()[0].pose, 0.0));
   EXPECT_FALSE (a.getBackgroundObjects()[0].pose.isApprox (
       c.getBackgroundObjects()[0].pose, 1e-3));
+}
+
+TEST (SimulationBenchmarkScene, FixedCopiesPerTypeGiveThePairSubset)
+{
+  for (const auto scenario : {BenchmarkScenario::SINGLE_EASY,
+                              BenchmarkScenario::SINGLE_DIFFICULT,
+                              BenchmarkScenario::MULTI_EASY,
+                              BenchmarkScenario::MULTI_DIFFICULT})
+    for (std::uint32_t seed = 1; seed <= kSeeds; ++seed) {
+      SCOPED_TRACE (getScenarioName (scenario) + " seed " + std::to_string (seed));
+      for (const int copies : {2, 5}) {
+        std::vector<int> ids;
+        const Scene scene = makeScene (scenario, seed, ids, copies);
+        ASSERT_EQ (ids.size(), scene.getObjects().size());
+        const std::map<int, int> counts = countProducts (ids);
+        const auto once = std::count_if (
+            counts.begin(), counts.end(), [] (const auto& c) { return c.second == 1; });
+        const auto repeated = static_cast<long> (counts.size()) - once;
+        // Five copies of each of three types would leave the drawn range: 4 at most.
+        for (const auto& [id, count] : counts)
+          if (count > 1) {
+            EXPECT_EQ (count, copies == 5 && repeated == 3 ? 4 : copies) << id;
+          }
+        const bool single = scenario == BenchmarkScenario::SINGLE_EASY ||
+                            scenario == BenchmarkScenario::SINGLE_DIFFICULT;
+        EXPECT_EQ (repeated == 1, single);
+        EXPECT_EQ (once == 0,
+                   scenario == BenchmarkScenario::SINGLE_EASY ||
+                       scenario == BenchmarkScenario::MULTI_EASY);
+      }
+    }
+  // Rows and none ignore the setting.
+  std::vector<int> drawn, fixed;
+  makeScene (BenchmarkScenario::ROWS, 3, drawn);
+  makeScene (BenchmarkScenario::ROWS, 3, fixed, 2);
+  EXPECT_EQ (drawn, fixed);
+}
+
+TEST (SimulationBenchmarkScene, RefusesAnInvalidCopyCount)
+{
+  for (const int copies : {-1, 1, 10}) {
+    BenchmarkSceneOptions options;
+    options.instances_per_type = copies;
+    std::vector<int> ids;
+    Scene scene = makeScene (BenchmarkScenario::SINGLE_EASY, 1, ids);
+    EXPECT_FALSE (makeBenchmarkScene (options, catalog(), scene, ids)) << copies;
+    EXPECT_TRUE (scene.getObjects().empty());
+    EXPECT_TRUE (ids.empty());
+  }
 }
 
 TEST (SimulationBenchmarkScene, RefusesAnIncompleteCatalog)

@@ -53,6 +53,12 @@ struct BenchmarkSceneOptions
   std::uint32_t seed = 1;
   /** \brief The camera that will render the scene: objects are placed entirely in its view. */
   PinholeCamera camera;
+  /** \brief Instances of each repeated product type in S-ez, S-d, M-ez and M-d: 0 draws the
+    * count (2 to 9 with one type, 2 to 6 or 2 to 4 with two or three); 2 to 9 fixes it (at
+    * most 6 with two types, 4 with three). 2 gives the paper's pair subset, the scenes in which
+    * every repeated type appears exactly twice (190 of its 234 images). Rows and none ignore
+    * it. */
+  int instances_per_type = 0;
 };
 
 /** \brief Build one random frame of a benchmark scenario: products of the catalog resting on a
@@ -72,8 +78,8 @@ struct BenchmarkSceneOptions
   * \param[in] catalog the products, from makeProductCatalog()
   * \param[out] scene the scene; cleared when false is returned
   * \param[out] product_ids per scene object, its product id
-  * \return false (with a PCL_ERROR) if the camera or the catalog is invalid, or no layout was
-  * found (not expected with the default camera)
+  * \return false (with a PCL_ERROR) if the camera, the catalog or instances_per_type is
+  * invalid, or no layout was found (not expected with the default camera)
   */
 bool
 makeBenchmarkScene (const BenchmarkSceneOptions& options,
