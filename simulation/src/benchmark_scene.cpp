@@ -115,8 +115,8 @@ drawCount (int low, int high, DeterministicRandom& random)
 }
 
 /** The products, their counts and resting poses of one scene (`instances_per_type`: see
-  * BenchmarkSceneOptions; the count is drawn even when fixed, so that the products and the
-  * first resting poses stay those of the drawn scene).
+  * BenchmarkSceneOptions; the count is still drawn when fixed, after the product types, which
+  * stay those the drawn scene starts with).
   */
 Composition
 drawComposition (BenchmarkScenario scenario,
