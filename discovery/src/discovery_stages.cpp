@@ -70,7 +70,8 @@ resolveOverlaps (const DiscoveryParameters& p,
                  const KeypointCloud& frame,
                  ObjectModels& models)
 {
-  if (mergeOverlappingModels (frame, models) > 0)
+  if (mergeOverlappingModels (frame, models, p.duplicate_angle, p.duplicate_distance) >
+      0)
     for (auto& model : models)
       refineModel (model, frame, p.refinement_iterations);
   for (auto& model : models)

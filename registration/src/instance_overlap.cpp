@@ -11,8 +11,15 @@ namespace mid {
 
 namespace {
 
-/** Centroid, RMS radius and mean normal (unit, zero if the normals cancel out) of an
-  * instance's observed keypoints.
+/** Length of the mean of unit normals below which they point too many ways to have a mean
+  * direction (0.5: normals spread over a cone of about 60 deg half-angle, or two faces at
+  * 120 deg).
+  */
+constexpr float kMinNormalAgreement = 0.5f;
+
+/** Centroid, RMS radius and mean normal of an instance's observed keypoints. The mean normal
+  * is the unit mean of the finite keypoint normals, zero when they do not agree (their mean is
+  * shorter than kMinNormalAgreement) or none is finite.
   */
 struct Footprint
 {
@@ -28,12 +35,20 @@ footprintOf (const KeypointCloud& keypoints, const ModelInstance& instance)
   Footprint footprint;
   if (instance.keypoints.empty())
     return footprint;
+  std::size_t normals = 0;
   for (const auto k : instance.keypoints) {
-    footprint.centroid += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
-    footprint.normal += keypoints[static_cast<std::size_t> (k)].getNormalVector3fMap();
+    const auto& keypoint = keypoints[static_cast<std::size_t> (k)];
+    footprint.centroid += keypoint.getVector3fMap();
+    if (keypoint.getNormalVector3fMap().allFinite()) {
+      footprint.normal += keypoint.getNormalVector3fMap();
+      ++normals;
+    }
   }
-  footprint.normal = footprint.normal.norm() > 1e-3f ? footprint.normal.normalized()
-                                                     : Eigen::Vector3f::Zero();
+  footprint.normal =
+      normals > 0 && footprint.normal.norm() >=
+                         kMinNormalAgreement * static_cast<float> (normals)
+          ? footprint.normal.normalized()
+          : Eigen::Vector3f::Zero();
   footprint.centroid /= static_cast<float> (instance.keypoints.size());
   float sum = 0.0f;
   for (const auto k : instance.keypoints)
@@ -54,19 +69,6 @@ observations (const ObjectModel& model)
                           [] (std::size_t sum, const ModelInstance& instance) {
                             return sum + instance.keypoints.size();
                           });
-}
-
-/** Join `extra`'s observations (landmarks already in `target`'s model) to `target`. */
-void
-joinInstance (ModelInstance& target, const ModelInstance& extra)
-{
-  for (std::size_t o = 0; o < extra.keypoints.size(); ++o)
-    if (std::find (target.keypoints.begin(),
-                   target.keypoints.end(),
-                   extra.keypoints[o]) == target.keypoints.end()) {
-      target.keypoints.push_back (extra.keypoints[o]);
-      target.landmarks.push_back (extra.landmarks[o]);
-    }
 }
 
 /** Pairs (landmark of into, landmark of from) observed by one keypoint of the frame. */
@@ -93,54 +95,60 @@ sameLandmarks (const ObjectModel& into, const ObjectModel& from)
 
 /** Merge `from` into `into` through one instance pair on one physical copy: an overlapping
   * pair if there is one, else an adjoining one, the one with most observations first; false
-  * if no pair overlaps or adjoins.
+  * if no pair overlaps or adjoins. Another instance of `from` joins an instance of `into` that
+  * it overlaps or whose pose it takes in `into`'s frame (within max_angle, max_distance).
   */
 bool
 mergeThroughSharedCopy (const KeypointCloud& keypoints,
                         ObjectModel& into,
-                        const ObjectModel& from)
+                        const ObjectModel& from,
+                        float max_angle,
+                        float max_distance)
 {
-  const ModelInstance* best_into = nullptr;
-  const ModelInstance* best_from = nullptr;
+  const std::size_t none = from.instances.size();
+  std::size_t link_into = 0, link_from = none;
   std::pair<bool, std::size_t> best_rank (false, 0);
-  for (const auto& a : into.instances)
-    for (const auto& b : from.instances) {
+  for (std::size_t i = 0; i < into.instances.size(); ++i)
+    for (std::size_t j = 0; j < from.instances.size(); ++j) {
+      const ModelInstance &a = into.instances[i], &b = from.instances[j];
       const std::pair<bool, std::size_t> rank (instancesOverlap (keypoints, a, b),
                                                a.keypoints.size() + b.keypoints.size());
       if (rank > best_rank && (rank.first || instancesAdjoin (keypoints, a, b))) {
-        best_into = &a;
-        best_from = &b;
+        link_into = i;
+        link_from = j;
         best_rank = rank;
       }
     }
-  if (!best_into)
+  if (link_from == none)
     return false;
-  const auto linked = static_cast<std::ptrdiff_t> (best_into - into.instances.data());
   // from's frame -> camera -> into's frame.
-  const Eigen::Matrix4f from_to_into = best_into->pose.inverse() * best_from->pose;
+  const Eigen::Matrix4f from_to_into =
+      into.instances[link_into].pose.inverse() * from.instances[link_from].pose;
   const auto same = sameLandmarks (into, from);
   ObjectModel moved_from = from;
   moved_from.instances.clear();
-  const std::size_t old_instances = into.instances.size();
-  // The landmarks and descriptors first (no instance), then the instances, by overlap.
+  // The landmarks and descriptors first (no instance), then the instances, each compared with
+  // into's instances as they were before the merge.
   std::vector<int> landmark_of;
   mergeModel (into, moved_from, from_to_into.inverse(), same, 0.0f, 0.0f, &landmark_of);
-  for (const auto& b : from.instances) {
-    ModelInstance moved = b;
-    moved.pose = b.pose * from_to_into.inverse();
+  const ModelInstances before = into.instances;
+  for (std::size_t j = 0; j < from.instances.size(); ++j) {
+    ModelInstance moved = from.instances[j];
+    moved.pose = moved.pose * from_to_into.inverse();
     for (auto& l : moved.landmarks)
       l = landmark_of[static_cast<std::size_t> (l)];
-    // The linking pair is one copy by definition; any other instance joins one it overlaps.
-    auto joined = &b == best_from
-                      ? into.instances.begin() + linked
-                      : std::find_if (into.instances.begin(),
-                                      into.instances.begin() +
-                                          static_cast<std::ptrdiff_t> (old_instances),
-                                      [&] (const ModelInstance& a) {
-                                        return instancesOverlap (keypoints, a, moved);
-                                      });
-    if (joined != into.instances.begin() + static_cast<std::ptrdiff_t> (old_instances))
-      joinInstance (*joined, moved);
+    // The linking pair is one copy by definition.
+    std::size_t joined = j == link_from ? link_into : before.size();
+    for (std::size_t i = 0; i < before.size() && joined == before.size(); ++i)
+      if (instancesOverlap (keypoints, before[i], moved) ||
+          posesCoincide (before[i].pose,
+                         moved.pose,
+                         Eigen::Vector3f::Zero(),
+                         max_angle,
+                         max_distance))
+        joined = i;
+    if (joined < before.size())
+      joinObservations (into.instances[joined], moved);
     else
       into.instances.push_back (moved);
   }
@@ -204,7 +212,10 @@ removeOverlappingInstances (const KeypointCloud& keypoints, ObjectModel& model)
 }
 
 std::size_t
-mergeOverlappingModels (const KeypointCloud& keypoints, ObjectModels& models)
+mergeOverlappingModels (const KeypointCloud& keypoints,
+                        ObjectModels& models,
+                        float max_angle,
+                        float max_distance)
 {
   std::stable_sort (
       models.begin(), models.end(), [] (const ObjectModel& a, const ObjectModel& b) {
@@ -213,7 +224,8 @@ mergeOverlappingModels (const KeypointCloud& keypoints, ObjectModels& models)
   std::size_t merged = 0;
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = i + 1; j < models.size();) {
-      if (mergeThroughSharedCopy (keypoints, models[i], models[j])) {
+      if (mergeThroughSharedCopy (
+              keypoints, models[i], models[j], max_angle, max_distance)) {
         models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
         ++merged;
       }

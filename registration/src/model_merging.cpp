@@ -1,23 +1,10 @@
 #include <mid/registration/model_merging.h>
 
 #include <map>
-#include <set>
 
 namespace mid {
 
 namespace {
-
-/** Join instance `extra` to `target`, skipping keypoints it already observes. */
-void
-joinObservations (ModelInstance& target, const ModelInstance& extra)
-{
-  const std::set<pcl::index_t> seen (target.keypoints.begin(), target.keypoints.end());
-  for (std::size_t o = 0; o < extra.keypoints.size(); ++o)
-    if (seen.count (extra.keypoints[o]) == 0) {
-      target.keypoints.push_back (extra.keypoints[o]);
-      target.landmarks.push_back (extra.landmarks[o]);
-    }
-}
 
 /** Add an instance, or join it to the existing instance whose pose coincides with it. */
 void

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace mid {
 
@@ -28,6 +29,17 @@ updateInstanceError (const ObjectModel& model,
     sum += (rotation * landmark + translation - observed).squaredNorm();
   }
   instance.rms_error = std::sqrt (sum / static_cast<float> (instance.keypoints.size()));
+}
+
+void
+joinObservations (ModelInstance& target, const ModelInstance& extra)
+{
+  const std::set<pcl::index_t> seen (target.keypoints.begin(), target.keypoints.end());
+  for (std::size_t o = 0; o < extra.keypoints.size(); ++o)
+    if (seen.count (extra.keypoints[o]) == 0) {
+      target.keypoints.push_back (extra.keypoints[o]);
+      target.landmarks.push_back (extra.landmarks[o]);
+    }
 }
 
 bool

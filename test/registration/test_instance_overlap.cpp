@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 namespace {
@@ -144,7 +145,7 @@ TEST_F (InstanceOverlap, KeypointsOfOneCopyOverlapThoseOfAnotherDoNot)
       mid::instancesOverlap (keypoints_, mid::ModelInstance(), instanceOn (0, 0, 20)));
 }
 
-TEST_F (InstanceOverlap, TwoFacesOfOneCopyAdjoinParallelOrDistantOnesDoNot)
+TEST_F (InstanceOverlap, TwoFacesOfOneCopyAdjoinDistantOnesDoNot)
 {
   const auto top = [] (int copy) { return instanceOn (copy, 0, kFace); };
   const auto side = [] (int copy) { return instanceOn (copy, kFace, kLandmarks); };
@@ -154,16 +155,49 @@ TEST_F (InstanceOverlap, TwoFacesOfOneCopyAdjoinParallelOrDistantOnesDoNot)
   // Faces of two copies 20 cm apart are too far.
   EXPECT_FALSE (mid::instancesAdjoin (keypoints_, top (0), side (1)));
   EXPECT_FALSE (mid::instancesAdjoin (keypoints_, side (1), top (2)));
-  // Two sets of one face's keypoints meet but face the same way (as copies side by side do); with no
-  // angle asked for they adjoin.
-  const auto left = instanceOn (1, 0, kFace / 2),
-             right = instanceOn (1, kFace / 2, kFace);
-  EXPECT_FALSE (mid::instancesAdjoin (keypoints_, left, right));
-  EXPECT_TRUE (mid::instancesAdjoin (keypoints_, left, right, 0.0f));
   // The faces are 90 deg apart.
   EXPECT_TRUE (mid::instancesAdjoin (keypoints_, top (1), side (1), 1.5f));
   EXPECT_FALSE (mid::instancesAdjoin (keypoints_, top (1), side (1), 1.6f));
   EXPECT_FALSE (mid::instancesAdjoin (keypoints_, mid::ModelInstance(), side (1)));
+}
+
+TEST (InstanceAdjoin, CopiesTouchingAlongTheirLongSidesDoNotAdjoin)
+{
+  // Two copies of a 10 x 5 cm face, resting the same way up and touching along their long
+  // sides: their footprints meet (centroids 0.77 sums of RMS radii apart), their normals are
+  // parallel.
+  mid::KeypointCloud keypoints;
+  mid::ModelInstance copies[2];
+  for (int copy = 0; copy < 2; ++copy)
+    for (int i = 0; i < 10; ++i)
+      for (int j = 0; j < 5; ++j) {
+        pcl::PointNormal k;
+        k.getVector3fMap() = Eigen::Vector3f (-0.045f + 0.01f * static_cast<float> (i),
+                                              -0.02f + 0.01f * static_cast<float> (j) +
+                                                  0.05f * static_cast<float> (copy),
+                                              0.8f);
+        k.getNormalVector3fMap() = Eigen::Vector3f (0.0f, 0.0f, -1.0f);
+        copies[copy].keypoints.push_back (static_cast<pcl::index_t> (keypoints.size()));
+        copies[copy].landmarks.push_back (i * 5 + j);
+        keypoints.push_back (k);
+      }
+  EXPECT_FALSE (mid::instancesOverlap (keypoints, copies[0], copies[1]));
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints, copies[0], copies[1]));
+  // Only the angle keeps them apart.
+  EXPECT_TRUE (mid::instancesAdjoin (keypoints, copies[0], copies[1], 0.0f));
+  // Tilt copy 1 by 90 deg (a side face): they adjoin; a non-finite normal is skipped.
+  for (const auto k : copies[1].keypoints)
+    keypoints[static_cast<std::size_t> (k)].getNormalVector3fMap() =
+        Eigen::Vector3f (0.0f, 1.0f, 0.0f);
+  keypoints[static_cast<std::size_t> (copies[1].keypoints.front())].normal_x =
+      std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE (mid::instancesAdjoin (keypoints, copies[0], copies[1]));
+  // Normals that point every way (half up, half down) have no mean direction.
+  for (std::size_t o = 0; o < copies[1].keypoints.size(); ++o)
+    keypoints[static_cast<std::size_t> (copies[1].keypoints[o])]
+        .getNormalVector3fMap() =
+        Eigen::Vector3f (0.0f, o % 2 == 0 ? 1.0f : -1.0f, 0.0f);
+  EXPECT_FALSE (mid::instancesAdjoin (keypoints, copies[0], copies[1], 0.0f));
 }
 
 TEST_F (InstanceOverlap, KeepsTheLargerOfTwoInstancesOnOneCopy)
@@ -211,6 +245,25 @@ TEST_F (InstanceOverlap, MergesModelsOfTwoFacesThroughTheCopyThatShowsBoth)
   ASSERT_EQ (models.size(), 1u);
   EXPECT_EQ (models.front().landmarks.size(), static_cast<std::size_t> (kLandmarks));
   expectExactInstances (models.front(), 1, kLandmarks);
+}
+
+TEST_F (InstanceOverlap, AnotherCopyShowingBothFacesBecomesOneInstance)
+{
+  // A knows the top face on all three copies, B the side face on copies 1 and 2: linked
+  // through one of them, B's instance on the other copy takes the pose of A's there and joins
+  // it (the two do not overlap: their keypoints lie on different faces).
+  const Eigen::Matrix4f frame_b = rigidMotion (Eigen::Vector3f (0.1f, 0.2f, -0.1f),
+                                               -0.7f,
+                                               Eigen::Vector3f (1, 1, 0))
+                                      .matrix();
+  mid::ObjectModels models{modelOf (0, kFace, Eigen::Matrix4f::Identity(), {0, 1, 2}),
+                           modelOf (kFace, kLandmarks, frame_b, {1, 2})};
+  EXPECT_EQ (mid::mergeOverlappingModels (keypoints_, models), 1u);
+  ASSERT_EQ (models.size(), 1u);
+  expectExactInstances (models.front(), 2, kLandmarks);
+  for (const auto& instance : models.front().instances)
+    EXPECT_EQ (instance.keypoints.size(),
+               instance.keypoints.front() / kLandmarks == 0 ? kFace : kLandmarks);
 }
 
 TEST_F (InstanceOverlap, LeavesModelsOfDifferentCopiesApart)

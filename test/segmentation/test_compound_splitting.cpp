@@ -31,8 +31,8 @@ struct Copies
         z (-0.09f, 0.09f);
     for (int i = 0; i < kPoints; ++i) {
       Eigen::Vector3f local;
-      local.x() =
-          x (rng); // one draw per statement: the same points with every compiler
+      // One draw per statement: the same points with every compiler.
+      local.x() = x (rng);
       local.y() = y (rng);
       local.z() = z (rng);
       pcl::PointNormal point;

@@ -122,6 +122,10 @@ TEST (SurfaceGap, ALonePixelBehindIsNotAGap)
   // floor's depth (a flying pixel, then a narrow slit).
   auto cloud = renderPlates ({{-0.08f, 0.08f, 0.8f, 1.0f, kTop}}, kFloor);
   const auto surface = surfaceOf (cloud);
+  const int width = mid::test::kPlateWidth;
+  // On one row, middle - 1 .. middle + 1 lie on the line between the keypoints.
+  ASSERT_EQ (surface.keypoint_pixels[0] / width, surface.keypoint_pixels[1] / width);
+  ASSERT_GT (surface.keypoint_pixels[1] - surface.keypoint_pixels[0], 10);
   const auto middle = static_cast<std::size_t> (
       (surface.keypoint_pixels[0] + surface.keypoint_pixels[1]) / 2);
   const auto seeFloor = [&cloud] (std::size_t p) {

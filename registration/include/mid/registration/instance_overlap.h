@@ -43,7 +43,8 @@ instancesOverlap (const KeypointCloud& keypoints,
   * \param[in] min_angle the mean normals must differ by at least this (radians; default
   * 45 deg, half way between the parallel faces of copies side by side and the perpendicular
   * faces of a box)
-  * \return false if either instance observes no keypoint or its normals cancel out
+  * \return false if either instance observes no keypoint or its keypoints' normals point too
+  * many ways to have a mean direction (non-finite normals are skipped)
   */
 bool
 instancesAdjoin (const KeypointCloud& keypoints,
@@ -52,8 +53,9 @@ instancesAdjoin (const KeypointCloud& keypoints,
                  float min_angle = static_cast<float> (M_PI / 4.0));
 
 /** \brief Remove the instances of a model that lie on the same physical object as an instance
-  * observing at least as many keypoints (on a tie the earlier instance stays) (an object with a repeated pattern on one face, such as two
-  * copies of a logo, gives such pairs); the remaining instances keep their order.
+  * observing at least as many keypoints (on a tie the earlier instance stays); an object with
+  * a repeated pattern on one face, such as two copies of a logo, gives such pairs. The
+  * remaining instances keep their order.
   * \param[in] keypoints the frame's keypoints, which the instances index
   * \param[in,out] model the model whose instances are checked
   * \return the number of instances removed
@@ -71,15 +73,22 @@ removeOverlappingInstances (const KeypointCloud& keypoints, ObjectModel& model);
   * (instancesAdjoin()) with the most observations. B is brought into A's frame by that pair;
   * landmarks of B observed by a keypoint that also observes a landmark of A become that
   * landmark; B's instance of the pair joins A's (their keypoints are added to it), B's other
-  * instances join an instance of A they overlap, or else become new instances of A.
+  * instances join an instance of A they overlap or whose pose they take in A's frame (another
+  * copy that shows both faces), or else become new instances of A.
   * Complements appearance-based merging: the two models may share no descriptor at all when
   * they were built from different keypoints of one face (overlapping instances) or from two
   * faces of the object that only one copy shows together (adjoining instances).
   * \param[in] keypoints the frame's keypoints, which the instances index
   * \param[in,out] models the models; merged ones are removed
+  * \param[in] max_angle, max_distance an instance of B whose pose, in A's frame, lies within
+  *            these (radians, metres) of an instance of A is that instance (defaults: those of
+  *            DiscoveryParameters::duplicate_angle and duplicate_distance)
   * \return the number of models merged into others
   */
 std::size_t
-mergeOverlappingModels (const KeypointCloud& keypoints, ObjectModels& models);
+mergeOverlappingModels (const KeypointCloud& keypoints,
+                        ObjectModels& models,
+                        float max_angle = static_cast<float> (10.0 * M_PI / 180.0),
+                        float max_distance = 0.01f);
 
 } // namespace mid

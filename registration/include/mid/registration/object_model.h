@@ -71,6 +71,15 @@ updateInstanceError (const ObjectModel& model,
                      const KeypointCloud& keypoints,
                      ModelInstance& instance);
 
+/** \brief Add the observations of `extra` (another view of the same physical copy, whose
+  * landmark indices already refer to the same model) to `target`, skipping keypoints `target`
+  * already observes; its pose stays.
+  * \param[in,out] target the instance that gains observations
+  * \param[in] extra the instance whose observations are added
+  */
+void
+joinObservations (ModelInstance& target, const ModelInstance& extra);
+
 /** \brief True if two model -> camera poses place the model within max_angle (radians) and
   * max_distance (metres, measured at the model point `center`) of each other.
   * \param[in] a first pose, model -> camera
