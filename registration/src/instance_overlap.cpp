@@ -17,6 +17,9 @@ namespace {
   */
 constexpr float kMinNormalAgreement = 0.5f;
 
+/** instancesAdjoin()'s default angle, used by model merging. */
+const float kAdjoinAngle = static_cast<float> (M_PI / 4.0);
+
 /** Centroid, RMS radius and mean normal of an instance's observed keypoints. The mean normal
   * is the unit mean of the finite keypoint normals, zero when they do not agree (their mean is
   * shorter than kMinNormalAgreement) or none is finite.
@@ -58,6 +61,36 @@ footprintOf (const KeypointCloud& keypoints, const ModelInstance& instance)
   footprint.radius = std::sqrt (sum / static_cast<float> (instance.keypoints.size()));
   footprint.valid = true;
   return footprint;
+}
+
+/** The footprints of a model's instances, in order. */
+std::vector<Footprint>
+footprintsOf (const KeypointCloud& keypoints, const ModelInstances& instances)
+{
+  std::vector<Footprint> footprints;
+  footprints.reserve (instances.size());
+  for (const auto& instance : instances)
+    footprints.push_back (footprintOf (keypoints, instance));
+  return footprints;
+}
+
+/** See instancesOverlap(). */
+bool
+footprintsOverlap (const Footprint& a, const Footprint& b)
+{
+  return a.valid && b.valid &&
+         (a.centroid - b.centroid).norm() < std::max (a.radius, b.radius);
+}
+
+/** See instancesAdjoin(). */
+bool
+footprintsAdjoin (const Footprint& a, const Footprint& b, float min_angle)
+{
+  if (!a.valid || !b.valid || a.normal.isZero() || b.normal.isZero())
+    return false;
+  const float cos_angle = std::clamp (a.normal.dot (b.normal), -1.0f, 1.0f);
+  return (a.centroid - b.centroid).norm() < a.radius + b.radius &&
+         std::acos (cos_angle) >= min_angle;
 }
 
 std::size_t
@@ -105,15 +138,21 @@ mergeThroughSharedCopy (const KeypointCloud& keypoints,
                         float max_angle,
                         float max_distance)
 {
-  const std::size_t none = from.instances.size();
+  // Footprints depend on the observed keypoints only, which moving an instance into another
+  // frame keeps: computed once, before the merge.
+  const std::vector<Footprint> into_prints = footprintsOf (keypoints, into.instances),
+                               from_prints = footprintsOf (keypoints, from.instances);
+  const std::size_t none = from.instances.size(), old_instances = into.instances.size();
   std::size_t link_into = 0, link_from = none;
   std::pair<bool, std::size_t> best_rank (false, 0);
-  for (std::size_t i = 0; i < into.instances.size(); ++i)
+  for (std::size_t i = 0; i < old_instances; ++i)
     for (std::size_t j = 0; j < from.instances.size(); ++j) {
-      const ModelInstance &a = into.instances[i], &b = from.instances[j];
-      const std::pair<bool, std::size_t> rank (instancesOverlap (keypoints, a, b),
-                                               a.keypoints.size() + b.keypoints.size());
-      if (rank > best_rank && (rank.first || instancesAdjoin (keypoints, a, b))) {
+      const std::pair<bool, std::size_t> rank (
+          footprintsOverlap (into_prints[i], from_prints[j]),
+          into.instances[i].keypoints.size() + from.instances[j].keypoints.size());
+      if (rank > best_rank &&
+          (rank.first ||
+           footprintsAdjoin (into_prints[i], from_prints[j], kAdjoinAngle))) {
         link_into = i;
         link_from = j;
         best_rank = rank;
@@ -128,26 +167,25 @@ mergeThroughSharedCopy (const KeypointCloud& keypoints,
   ObjectModel moved_from = from;
   moved_from.instances.clear();
   // The landmarks and descriptors first (no instance), then the instances, each compared with
-  // into's instances as they were before the merge.
+  // into's instances as they were before the merge (joining keeps their poses).
   std::vector<int> landmark_of;
   mergeModel (into, moved_from, from_to_into.inverse(), same, 0.0f, 0.0f, &landmark_of);
-  const ModelInstances before = into.instances;
   for (std::size_t j = 0; j < from.instances.size(); ++j) {
     ModelInstance moved = from.instances[j];
     moved.pose = moved.pose * from_to_into.inverse();
     for (auto& l : moved.landmarks)
       l = landmark_of[static_cast<std::size_t> (l)];
     // The linking pair is one copy by definition.
-    std::size_t joined = j == link_from ? link_into : before.size();
-    for (std::size_t i = 0; i < before.size() && joined == before.size(); ++i)
-      if (instancesOverlap (keypoints, before[i], moved) ||
-          posesCoincide (before[i].pose,
+    std::size_t joined = j == link_from ? link_into : old_instances;
+    for (std::size_t i = 0; i < old_instances && joined == old_instances; ++i)
+      if (footprintsOverlap (into_prints[i], from_prints[j]) ||
+          posesCoincide (into.instances[i].pose,
                          moved.pose,
                          Eigen::Vector3f::Zero(),
                          max_angle,
                          max_distance))
         joined = i;
-    if (joined < before.size())
+    if (joined < old_instances)
       joinObservations (into.instances[joined], moved);
     else
       into.instances.push_back (moved);
@@ -164,10 +202,7 @@ instancesOverlap (const KeypointCloud& keypoints,
                   const ModelInstance& a,
                   const ModelInstance& b)
 {
-  const Footprint fa = footprintOf (keypoints, a), fb = footprintOf (keypoints, b);
-  if (!fa.valid || !fb.valid)
-    return false;
-  return (fa.centroid - fb.centroid).norm() < std::max (fa.radius, fb.radius);
+  return footprintsOverlap (footprintOf (keypoints, a), footprintOf (keypoints, b));
 }
 
 bool
@@ -176,12 +211,8 @@ instancesAdjoin (const KeypointCloud& keypoints,
                  const ModelInstance& b,
                  float min_angle)
 {
-  const Footprint fa = footprintOf (keypoints, a), fb = footprintOf (keypoints, b);
-  if (!fa.valid || !fb.valid || fa.normal.isZero() || fb.normal.isZero())
-    return false;
-  const float cos_angle = std::clamp (fa.normal.dot (fb.normal), -1.0f, 1.0f);
-  return (fa.centroid - fb.centroid).norm() < fa.radius + fb.radius &&
-         std::acos (cos_angle) >= min_angle;
+  return footprintsAdjoin (
+      footprintOf (keypoints, a), footprintOf (keypoints, b), min_angle);
 }
 
 std::size_t
@@ -194,13 +225,13 @@ removeOverlappingInstances (const KeypointCloud& keypoints, ObjectModel& model)
         return model.instances[i].keypoints.size() >
                model.instances[j].keypoints.size();
       });
+  const std::vector<Footprint> prints = footprintsOf (keypoints, model.instances);
   std::vector<bool> removed (model.instances.size(), false);
   for (std::size_t i = 0; i < order.size(); ++i)
     if (!removed[order[i]])
       for (std::size_t j = i + 1; j < order.size(); ++j)
-        if (!removed[order[j]] && instancesOverlap (keypoints,
-                                                    model.instances[order[i]],
-                                                    model.instances[order[j]]))
+        if (!removed[order[j]] &&
+            footprintsOverlap (prints[order[i]], prints[order[j]]))
           removed[order[j]] = true;
   ModelInstances kept;
   for (std::size_t i = 0; i < model.instances.size(); ++i)
