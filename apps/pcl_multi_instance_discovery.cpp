@@ -98,6 +98,9 @@ printHelp (const char* program)
   line ("-eps E", "DBSCAN distance, metres", static_cast<double> (d.cluster_distance));
   line (
       "-min_cluster N", "DBSCAN min samples", static_cast<double> (d.min_cluster_size));
+  line ("-link_dist D",
+        "drop a shared-keypoint link whose sets' poses disagree this much, metres",
+        static_cast<double> (d.link_tolerance));
   line ("-inlier D",
         "RANSAC inlier threshold, metres",
         static_cast<double> (d.inlier_threshold));
@@ -165,6 +168,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-triplets_per_kp", 1},
                                       {"-eps", 1},
                                       {"-min_cluster", 1},
+                                      {"-link_dist", 1},
                                       {"-inlier", 1},
                                       {"-min_inliers", 1},
                                       {"-merge_inliers", 1},
@@ -229,6 +233,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-triplets_per_kp", p.triplets_per_keypoint) &&
       parseNumber (argc, argv, "-eps", p.cluster_distance) &&
       parseNumber (argc, argv, "-min_cluster", p.min_cluster_size) &&
+      parseNumber (argc, argv, "-link_dist", p.link_tolerance) &&
       parseNumber (argc, argv, "-inlier", p.inlier_threshold) &&
       parseNumber (argc, argv, "-min_inliers", p.min_inliers) &&
       parseNumber (argc, argv, "-merge_inliers", p.min_merge_inliers) &&

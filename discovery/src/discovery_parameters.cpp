@@ -118,6 +118,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "duplicate_distance",
              static_cast<double> (p.duplicate_distance),
              ">= 0");
+  c.require (p.link_tolerance > 0.0f,
+             "link_tolerance",
+             static_cast<double> (p.link_tolerance),
+             "> 0");
   c.require (p.inlier_threshold > 0.0f,
              "inlier_threshold",
              static_cast<double> (p.inlier_threshold),

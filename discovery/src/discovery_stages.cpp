@@ -282,6 +282,7 @@ runStages (const DiscoveryParameters& p,
   builder.setClusters (std::const_pointer_cast<const TripletClusters> (clusters));
   builder.setRefinementIterations (p.refinement_iterations);
   builder.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+  builder.setLinkTolerance (p.link_tolerance);
   if (!builder.compute (result.models))
     return false;
   result.timing_ms.emplace_back ("modeling", watch.getTime());

@@ -52,6 +52,54 @@ private:
   std::vector<std::size_t> parent_;
 };
 
+/** The keypoints of each group of a component: all the keypoints of its sets, except that a
+  * contested keypoint (shared by the sets of a link the graph rejected) goes only to the group
+  * whose sets hold it most often, on a tie to the group whose keypoints' centroid is nearest
+  * (the set that holds it as a stray reaches over to another copy).
+  */
+std::vector<std::set<pcl::index_t>>
+assignKeypointsToGroups (const detail::PointSetGraph& graph,
+                         const KeypointCloud& keypoints,
+                         const std::vector<std::size_t>& component,
+                         const std::vector<int>& group,
+                         std::size_t groups)
+{
+  std::map<pcl::index_t, std::vector<std::size_t>> holders_per_group;
+  std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> centroids (
+      groups, Eigen::Vector3f::Zero());
+  std::vector<std::size_t> sizes (groups, 0);
+  for (const std::size_t n : component) {
+    const auto g = static_cast<std::size_t> (group[n]);
+    for (const auto k : graph.points (n)) {
+      auto& holders = holders_per_group[k];
+      holders.resize (groups, 0);
+      ++holders[g];
+      centroids[g] += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+      ++sizes[g];
+    }
+  }
+  for (std::size_t g = 0; g < groups; ++g)
+    centroids[g] /= static_cast<float> (std::max<std::size_t> (1, sizes[g]));
+  std::vector<std::set<pcl::index_t>> points (groups);
+  for (const auto& [k, holders] : holders_per_group) {
+    if (graph.contestedKeypoints().count (k) == 0) {
+      for (std::size_t g = 0; g < groups; ++g)
+        if (holders[g] > 0)
+          points[g].insert (k);
+      continue;
+    }
+    const Eigen::Vector3f p = keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+    std::size_t best = 0;
+    for (std::size_t g = 1; g < groups; ++g)
+      if (holders[g] > holders[best] ||
+          (holders[g] == holders[best] &&
+           (p - centroids[g]).norm() < (p - centroids[best]).norm()))
+        best = g;
+    points[best].insert (k);
+  }
+  return points;
+}
+
 /** Landmark normals: the mean of the observed normals rotated into the model frame. */
 void
 estimateLandmarkNormals (ObjectModel& model, const KeypointCloud& keypoints)
@@ -116,6 +164,12 @@ MultiInstanceModelBuilder::checkInputs() const
                static_cast<double> (duplicate_distance_));
     return false;
   }
+  if (!(link_tolerance_ > 0.0f)) {
+    PCL_ERROR ("%s Invalid link tolerance %g m (must be > 0).\n",
+               name,
+               static_cast<double> (link_tolerance_));
+    return false;
+  }
   for (const auto& cluster : *clusters_) {
     if (!cluster.transformation.allFinite()) {
       PCL_ERROR ("%s A cluster has a non-finite pose.\n", name);
@@ -147,7 +201,8 @@ MultiInstanceModelBuilder::compute (ObjectModels& models)
   const KeypointCloud& keypoints = *input_;
   const TripletClusters& clusters = *clusters_;
 
-  const detail::PointSetGraph graph (clusters, shared_point_weight_);
+  const detail::PointSetGraph graph (
+      clusters, keypoints, shared_point_weight_, link_tolerance_);
   LandmarkClasses classes (keypoints.size(), clusters);
   std::vector<bool> used (keypoints.size(), false);
 
@@ -159,18 +214,18 @@ MultiInstanceModelBuilder::compute (ObjectModels& models)
         graph.solveComponent (component, reference, to_reference, group);
 
     // One instance per group: the pose of its node nearest to the reference (model -> camera
-    // is the inverse of camera -> reference frame); its keypoints are all of its nodes' points.
-    std::vector<std::set<pcl::index_t>> group_points (groups);
+    // is the inverse of camera -> reference frame); its keypoints are its nodes' points.
     detail::Transforms group_pose (groups, Eigen::Matrix4f::Zero());
     std::vector<bool> has_pose (groups, false);
     for (const std::size_t n : component) {
       const auto g = static_cast<std::size_t> (group[n]);
-      group_points[g].insert (graph.points (n).begin(), graph.points (n).end());
       if (!has_pose[g] || n == reference) {
         group_pose[g] = to_reference[n].inverse();
         has_pose[g] = true;
       }
     }
+    const std::vector<std::set<pcl::index_t>> group_points =
+        assignKeypointsToGroups (graph, keypoints, component, group, groups);
     // Merge groups whose poses coincide: one instance seen through sets that share no keypoint.
     Eigen::Vector3f center = Eigen::Vector3f::Zero();
     std::size_t count = 0;

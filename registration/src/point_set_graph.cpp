@@ -1,5 +1,7 @@
 #include "point_set_graph.h"
 
+#include "pose_union_find.h"
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
@@ -26,7 +28,9 @@ using Graph = boost::adjacency_list<
 } // namespace
 
 PointSetGraph::PointSetGraph (const TripletClusters& clusters,
-                              double shared_point_weight)
+                              const KeypointCloud& keypoints,
+                              double shared_point_weight,
+                              float link_tolerance)
 : points_ (2 * clusters.size()), importance_ (2 * clusters.size(), 0)
 {
   for (std::size_t c = 0; c < clusters.size(); ++c) {
@@ -36,6 +40,8 @@ PointSetGraph::PointSetGraph (const TripletClusters& clusters,
                        2 * c + 1,
                        static_cast<double> (clusters[c].rms_error),
                        false,
+                       0,
+                       false,
                        clusters[c].transformation});
     importance_[2 * c] = importance_[2 * c + 1] = clusters[c].correspondences.size();
   }
@@ -44,7 +50,7 @@ PointSetGraph::PointSetGraph (const TripletClusters& clusters,
   for (std::size_t n = 0; n < points_.size(); ++n)
     for (const auto k : points_[n])
       holders[k].push_back (n);
-  std::set<std::pair<std::size_t, std::size_t>> shared;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> shared;
   for (const auto& entry : holders)
     for (std::size_t i = 0; i < entry.second.size(); ++i)
       for (std::size_t j = i + 1; j < entry.second.size(); ++j) {
@@ -53,10 +59,57 @@ PointSetGraph::PointSetGraph (const TripletClusters& clusters,
           continue; // one cluster's own two sets: joined by its pose, not by identity
         ++importance_[a];
         ++importance_[b];
-        shared.insert ({a, b});
+        ++shared[{a, b}];
       }
-  for (const auto& [a, b] : shared)
-    edges_.push_back ({a, b, shared_point_weight, true, Eigen::Matrix4f::Identity()});
+  for (const auto& [nodes, count] : shared)
+    edges_.push_back ({nodes.first,
+                       nodes.second,
+                       shared_point_weight,
+                       true,
+                       count,
+                       false,
+                       Eigen::Matrix4f::Identity()});
+  rejectInconsistentSharedEdges (keypoints, link_tolerance);
+}
+
+void
+PointSetGraph::rejectInconsistentSharedEdges (const KeypointCloud& keypoints,
+                                              float link_tolerance)
+{
+  PoseUnionFind frames (points_.size());
+  std::vector<std::size_t> order;
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    if (edges_[e].shared)
+      order.push_back (e);
+    else
+      frames.unite (edges_[e].u, edges_[e].v, edges_[e].u_to_v);
+  }
+  std::stable_sort (order.begin(), order.end(), [this] (std::size_t a, std::size_t b) {
+    return edges_[a].shared_count > edges_[b].shared_count;
+  });
+  for (const std::size_t e : order) {
+    Edge& edge = edges_[e];
+    Eigen::Matrix4f u_to_root, v_to_root;
+    if (frames.find (edge.u, u_to_root) != frames.find (edge.v, v_to_root)) {
+      frames.unite (edge.u, edge.v, edge.u_to_v);
+      continue;
+    }
+    Eigen::Vector3f center = Eigen::Vector3f::Zero();
+    for (const std::size_t n : {edge.u, edge.v})
+      for (const auto k : points_[n])
+        center += keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+    center /= static_cast<float> (points_[edge.u].size() + points_[edge.v].size());
+    const Eigen::Vector3f in_u = (u_to_root * center.homogeneous()).head<3>();
+    const Eigen::Vector3f in_v = (v_to_root * center.homogeneous()).head<3>();
+    edge.rejected = !((in_u - in_v).norm() < link_tolerance);
+    if (edge.rejected) {
+      const std::set<pcl::index_t> of_u (points_[edge.u].begin(),
+                                         points_[edge.u].end());
+      for (const auto k : points_[edge.v])
+        if (of_u.count (k) > 0)
+          contested_.insert (k);
+    }
+  }
 }
 
 std::vector<std::vector<std::size_t>>
@@ -64,7 +117,8 @@ PointSetGraph::components() const
 {
   Graph graph (points_.size());
   for (const auto& e : edges_)
-    boost::add_edge (e.u, e.v, graph);
+    if (!e.rejected)
+      boost::add_edge (e.u, e.v, graph);
   std::vector<int> component (points_.size());
   const int count = boost::connected_components (graph, component.data());
   std::vector<std::vector<std::size_t>> result (static_cast<std::size_t> (count));
@@ -87,10 +141,11 @@ PointSetGraph::solveComponent (const std::vector<std::size_t>& component,
       });
   Graph graph (points_.size());
   for (std::size_t e = 0; e < edges_.size(); ++e)
-    boost::add_edge (edges_[e].u,
-                     edges_[e].v,
-                     Graph::edge_property_type (edges_[e].weight, e),
-                     graph);
+    if (!edges_[e].rejected)
+      boost::add_edge (edges_[e].u,
+                       edges_[e].v,
+                       Graph::edge_property_type (edges_[e].weight, e),
+                       graph);
   std::vector<Graph::vertex_descriptor> predecessor (points_.size());
   std::vector<double> distance (points_.size());
   boost::dijkstra_shortest_paths (
@@ -132,7 +187,7 @@ PointSetGraph::solveComponent (const std::vector<std::size_t>& component,
     return i;
   };
   for (const auto& e : edges_)
-    if (e.shared)
+    if (e.shared && !e.rejected)
       parent[std::max (find (e.u), find (e.v))] = std::min (find (e.u), find (e.v));
   group.assign (points_.size(), -1);
   std::map<std::size_t, int> group_of_root;

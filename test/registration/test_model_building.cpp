@@ -205,6 +205,84 @@ TEST (MultiInstanceModelBuilder, ChainsClustersIntoOneModelPerObject)
              25u + (3u * 30u - 25u - 25u - 20u) + 0u);
 }
 
+/** A row of six translated copies matched neighbour to neighbour, plus a cluster copy 1 ->
+  * copy 4 that also holds one keypoint of copy 2 (matched to copy 5: the row is periodic, so the
+  * match agrees with the cluster's pose). That keypoint is shared with the sets on copy 2.
+  */
+struct StrayRow
+{
+  Frame f;
+  std::vector<std::vector<int>> copies;
+  std::shared_ptr<mid::TripletClusters> clusters =
+      std::make_shared<mid::TripletClusters>();
+
+  StrayRow()
+  {
+    const int box = f.addObject (30);
+    for (int k = 0; k < 6; ++k)
+      copies.push_back (f.addInstance (
+          box, pose (-0.3f + 0.12f * static_cast<float> (k), 0.0f, 0.3f, {0, 0, 1})));
+    for (std::size_t k = 0; k + 1 < copies.size(); ++k)
+      clusters->push_back (f.cluster (copies[k], copies[k + 1], 20));
+    std::vector<int> from (copies[1].begin(), copies[1].begin() + 20);
+    std::vector<int> to (copies[4].begin(), copies[4].begin() + 20);
+    from.push_back (copies[2][0]);
+    to.push_back (copies[5][0]);
+    clusters->push_back (f.cluster (from, to, from.size()));
+  }
+
+  mid::ObjectModels
+  build (float link_tolerance) const
+  {
+    mid::MultiInstanceModelBuilder builder;
+    builder.setInputCloud (f.keypoints);
+    builder.setInputDescriptors (f.descriptors);
+    builder.setClusters (clusters);
+    builder.setLinkTolerance (link_tolerance);
+    mid::ObjectModels models;
+    EXPECT_TRUE (builder.compute (models));
+    return models;
+  }
+};
+
+TEST (MultiInstanceModelBuilder, AStrayKeypointDoesNotTieTwoCopiesIntoOneInstance)
+{
+  StrayRow row;
+  const auto models = row.build (0.04f);
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 6u);
+  std::set<int> found;
+  for (const auto& instance : models[0].instances)
+    found.insert (trueInstance (row.f, instance)); // each on one copy
+  EXPECT_EQ (found.size(), 6u);
+  expectPosesRelativeToTruth (row.f, models[0], 1e-3, 1e-4);
+
+  // The paper keeps every link: copies 1 and 2 become one instance, and so do copies 4 and 5
+  // (through the stray keypoint's match on copy 5).
+  const auto tied = row.build (1e3f);
+  ASSERT_EQ (tied.size(), 1u);
+  EXPECT_EQ (tied[0].instances.size(), 4u);
+}
+
+TEST (MultiInstanceModelBuilder, KeepsALinkWhosePosesDisagreeLessThanTheTolerance)
+{
+  StrayRow row;
+  // Without the stray keypoint, and with a 15 mm error in the pose of the cluster copy 1 ->
+  // copy 2, the loop copy 1 -> 2 -> 3 -> 4 -> 1 (back through the cluster copy 1 -> copy 4)
+  // closes with a 15 mm disagreement on the sets of one copy: below the tolerance, so one
+  // instance per copy.
+  auto& long_cluster = row.clusters->back();
+  long_cluster.correspondences.pop_back();
+  long_cluster.source_indices.pop_back();
+  long_cluster.target_indices.pop_back();
+  (*row.clusters)[1].transformation (0, 3) += 0.015f;
+  const auto models = row.build (0.04f);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models[0].instances.size(), 6u);
+  // With a 10 mm tolerance the closing link is dropped and that copy is seen twice.
+  EXPECT_EQ (row.build (0.01f)[0].instances.size(), 7u);
+}
+
 TEST (MultiInstanceModelBuilder, RefusesInconsistentInput)
 {
   Frame f;

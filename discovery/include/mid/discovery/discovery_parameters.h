@@ -121,6 +121,12 @@ struct DiscoveryParameters
   float duplicate_angle = static_cast<float> (10.0 * M_PI / 180.0);
   float duplicate_distance = 0.01f;
   ///@}
+  /** \brief A link between two point sets that share a keypoint is dropped when the poses of
+    * the other links put the sets this far apart (metres, > 0; not in the paper: a stray
+    * keypoint otherwise ties two copies of a row into one instance). See
+    * MultiInstanceModelBuilder::setLinkTolerance().
+    */
+  float link_tolerance = 0.04f;
 
   // --- Additional instances (ModelInstanceDetector) ---
   /** \brief Compare the models with each other and merge those that are one object. */
