@@ -6,6 +6,7 @@
 #include <mid/evaluation/benchmark_report.h>
 #include <mid/evaluation/detection_result.h>
 #include <mid/evaluation/ground_truth.h>
+#include <mid/evaluation/shared_surface.h>
 #include <mid/io/staged_files.h>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,7 +37,7 @@ printHelp (const char* program)
               "2017 rules).\n\n");
   print_info ("Usage: %s DATASET_DIR RESULTS_DIR [RESULTS_DIR...] [-names A,B,...] "
               "[-report FILE]\n"
-              "          [-min_inside F] [-frames]\n\n",
+              "          [-min_inside F] [-frames] [-shared_cell M] [-findable N]\n\n",
               program);
   print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with "
               "scene_gt.json,\n");
@@ -62,6 +64,25 @@ printHelp (const char* program)
               "false\n");
   print_info (
       "                positives, false negatives) and its number of objects\n");
+  print_info (
+      "  -shared_cell M  when every scene has depth/ and scene_camera.json: edge "
+      "of the\n");
+  print_info ("                model-frame cubes in which the surface each annotated "
+              "instance\n");
+  print_info (
+      "                shares with another copy of its type is counted (default "
+      "0.01 m;\n");
+  print_info ("                0 = no such table); a second table gives recall against "
+              "it\n");
+  print_info (
+      "  -findable N   that table's recall and F1 count only instances sharing at "
+      "least\n");
+  print_info ("                N cubes (default 10)\n");
+  print_info (
+      "  -max_tilt T   a cube counts as shared when the transition tilt between "
+      "the two\n");
+  print_info ("                views of it is at most T (default 2, where SIFT stops "
+              "matching)\n");
 }
 
 std::string
@@ -102,13 +123,17 @@ scoreMethod (const std::vector<fs::path>& scenes,
              const std::map<std::string, std::string>& scenario_of,
              const fs::path& results,
              double min_inside,
+             float shared_cell,
+             float max_tilt,
              bool per_frame,
              std::map<std::string, mid::evaluation::ScoreSummary>& scenarios)
 {
   std::size_t missing = 0;
   for (const auto& scene_path : scenes) {
     mid::evaluation::GroundTruthScene truth;
-    if (!mid::evaluation::loadBopScene (scene_path.string(), truth))
+    if (!mid::evaluation::loadBopScene (scene_path.string(), truth) ||
+        (shared_cell > 0.0f && !mid::evaluation::measureSharedSurface (
+                                   scene_path.string(), shared_cell, max_tilt, truth)))
       return false;
     const std::string scene = scene_path.filename().string();
     const auto named = scenario_of.find (scene);
@@ -175,21 +200,40 @@ main (int argc, char** argv)
   // word or a missing value would otherwise be ignored).
   std::vector<char*> options{argv[0]};
   options.insert (options.end(), argv + 2 + results.size(), argv + argc);
-  if (!mid::apps::onlyKnownArguments (
-          static_cast<int> (options.size()),
-          options.data(),
-          {{"-report", 1}, {"-min_inside", 1}, {"-names", 1}, {"-frames", 0}}))
+  if (!mid::apps::onlyKnownArguments (static_cast<int> (options.size()),
+                                      options.data(),
+                                      {{"-report", 1},
+                                       {"-min_inside", 1},
+                                       {"-names", 1},
+                                       {"-frames", 0},
+                                       {"-shared_cell", 1},
+                                       {"-findable", 1},
+                                       {"-max_tilt", 1}}))
     return 1;
   std::string report_path, names_list;
   double min_inside = 0.9;
+  float shared_cell = 0.01f, max_tilt = 2.0f;
+  int findable = 10;
   pcl::console::parse_argument (argc, argv, "-report", report_path);
-  if (!mid::apps::parseNumber (argc, argv, "-min_inside", min_inside))
+  if (!mid::apps::parseNumber (argc, argv, "-min_inside", min_inside) ||
+      !mid::apps::parseNumber (argc, argv, "-shared_cell", shared_cell) ||
+      !mid::apps::parseNumber (argc, argv, "-findable", findable) ||
+      !mid::apps::parseNumber (argc, argv, "-max_tilt", max_tilt))
     return 1;
   pcl::console::parse_argument (argc, argv, "-names", names_list);
   const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
   if (!(min_inside > 0.0 && min_inside <= 1.0)) {
     print_error ("Invalid parameter: min_inside is %g, must be in (0, 1].\n",
                  min_inside);
+    return 1;
+  }
+  if (!(shared_cell >= 0.0f) || findable < 0 || !(max_tilt >= 1.0f)) {
+    print_error (
+        "Invalid parameter: -shared_cell is %g and -findable %d (neither may be "
+        "negative), -max_tilt %g (must be 1 or more).\n",
+        static_cast<double> (shared_cell),
+        findable,
+        static_cast<double> (max_tilt));
     return 1;
   }
   if (results.empty()) {
@@ -226,12 +270,28 @@ main (int argc, char** argv)
     print_error ("'%s' holds no BOP scene folder (with scene_gt.json).\n", argv[1]);
     return 1;
   }
+  const bool has_depth =
+      std::all_of (scenes.begin(), scenes.end(), [] (const fs::path& s) {
+        return fs::is_directory (s / "depth") && fs::exists (s / "scene_camera.json");
+      });
+  if (shared_cell > 0.0f && !has_depth) {
+    print_info (
+        "Not every scene folder has depth/ and scene_camera.json: no shared-surface "
+        "table.\n");
+    shared_cell = 0.0f;
+  }
   std::vector<mid::evaluation::MethodScores> methods;
   for (std::size_t m = 0; m < results.size(); ++m) {
     mid::evaluation::MethodScores method;
     method.name = names[m];
-    if (!scoreMethod (
-            scenes, scenario_of, results[m], min_inside, per_frame, method.scenarios))
+    if (!scoreMethod (scenes,
+                      scenario_of,
+                      results[m],
+                      min_inside,
+                      shared_cell,
+                      max_tilt,
+                      per_frame,
+                      method.scenarios))
       return 1;
     methods.push_back (method);
   }
@@ -240,6 +300,13 @@ main (int argc, char** argv)
     if (methods.size() > 1)
       report += "\n" + method.name + ":\n\n";
     report += mid::evaluation::formatReport (method.scenarios);
+    if (shared_cell > 0.0f)
+      report +=
+          "\nRecall against the surface each instance shares with another copy of "
+          "its type (cubes of " +
+          std::to_string (static_cast<int> (std::lround (shared_cell * 1000.0f))) +
+          " mm in the model frame):\n\n" +
+          mid::evaluation::formatSharedSurfaceReport (method.scenarios, findable);
   }
   if (methods.size() > 1)
     report += "\nSide by side (time ratio: " + methods.front().name +

@@ -11,8 +11,9 @@ namespace evaluation {
 
 namespace {
 
+template <typename T>
 void
-append (std::vector<double>& to, const std::vector<double>& from)
+append (std::vector<T>& to, const std::vector<T>& from)
 {
   to.insert (to.end(), from.begin(), from.end());
 }
@@ -90,6 +91,46 @@ comparisonRow (const std::string& scenario,
   return line;
 }
 
+/** The bins of formatSharedSurfaceReport(): the lower bound of each bin's shared cubes. */
+constexpr int kSharedBins[] = {0, 1, 10, 30, 100};
+
+std::string
+sharedSurfaceRow (const std::string& name, const ScoreSummary& s, int min_shared_cells)
+{
+  const auto count = [] (const std::vector<int>& cells, int from, int to) {
+    return static_cast<int> (std::count_if (
+        cells.begin(), cells.end(), [&] (int c) { return c >= from && c < to; }));
+  };
+  std::string line =
+      "| " + name + std::string (name.size() < 10 ? 10 - name.size() : 0, ' ');
+  constexpr std::size_t bins = sizeof (kSharedBins) / sizeof (kSharedBins[0]);
+  for (std::size_t b = 0; b < bins; ++b) {
+    const int from = kSharedBins[b];
+    const int to = b + 1 < bins ? kSharedBins[b + 1] : std::numeric_limits<int>::max();
+    const int found = count (s.found_shared_cells, from, to);
+    char cell[48];
+    std::snprintf (cell,
+                   sizeof (cell),
+                   " | %3d / %3d",
+                   found,
+                   found + count (s.missed_shared_cells, from, to));
+    line += cell;
+  }
+  const int max = std::numeric_limits<int>::max();
+  const double precision = ScoreSummary::precision (s.instance_tp, s.instance_fp);
+  const double recall =
+      ScoreSummary::recall (count (s.found_shared_cells, min_shared_cells, max),
+                            count (s.missed_shared_cells, min_shared_cells, max));
+  char tail[64];
+  std::snprintf (tail,
+                 sizeof (tail),
+                 " | %5.3f | %5.3f | %5.3f |\n",
+                 precision,
+                 recall,
+                 ScoreSummary::f1 (precision, recall));
+  return line + tail;
+}
+
 } // namespace
 
 void
@@ -106,6 +147,8 @@ ScoreSummary::add (const FrameScore& score, const DetectionResult& result)
     pair_fn += score.pair_fn;
   }
   append (rotation_errors_deg, score.rotation_errors_deg);
+  append (found_shared_cells, score.found_shared_cells);
+  append (missed_shared_cells, score.missed_shared_cells);
   append (translation_errors_mm, score.translation_errors_mm);
   if (result.total_ms >= 0.0)
     times_ms.push_back (result.total_ms);
@@ -127,6 +170,8 @@ ScoreSummary::add (const ScoreSummary& other)
   pair_fp += other.pair_fp;
   pair_fn += other.pair_fn;
   append (rotation_errors_deg, other.rotation_errors_deg);
+  append (found_shared_cells, other.found_shared_cells);
+  append (missed_shared_cells, other.missed_shared_cells);
   append (translation_errors_mm, other.translation_errors_mm);
   append (times_ms, other.times_ms);
   append (feature_times_ms, other.feature_times_ms);
@@ -159,6 +204,23 @@ formatReport (const std::map<std::string, ScoreSummary>& scenarios)
   }
   report += row ("total", total);
   return report;
+}
+
+std::string
+formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
+                           int min_shared_cells)
+{
+  std::string report =
+      "| scenario   | found / annotated, sharing 0 cubes | 1-9 | 10-29 | "
+      "30-99 | >= 100 | instances P | R (sharing >= " +
+      std::to_string (min_shared_cells) +
+      ") | F1 |\n|---|---|---|---|---|---|---|---|---|\n";
+  ScoreSummary total;
+  for (const auto& [name, summary] : scenarios) {
+    report += sharedSurfaceRow (name, summary, min_shared_cells);
+    total.add (summary);
+  }
+  return report + sharedSurfaceRow ("total", total, min_shared_cells);
 }
 
 std::string

@@ -121,10 +121,17 @@ scoreFrame (const GroundTruthFrame& truth,
       ++score.pair_fp;
     addPoseErrors (truth, object, true_hits, score);
   }
-  for (std::size_t k = 0; k < truth.instances.size(); ++k)
-    if (annotated_of_type[truth.instances[k].object_id] >= 2 &&
-        found_instances.count (static_cast<int> (k)) == 0)
+  for (std::size_t k = 0; k < truth.instances.size(); ++k) {
+    const GroundTruthInstance& annotated = truth.instances[k];
+    if (annotated_of_type[annotated.object_id] < 2)
+      continue;
+    const bool found = found_instances.count (static_cast<int> (k)) > 0;
+    if (!found)
       ++score.instance_fn;
+    if (annotated.shared_surface_cells >= 0)
+      (found ? score.found_shared_cells : score.missed_shared_cells)
+          .push_back (annotated.shared_surface_cells);
+  }
   for (const auto& [type, count] : annotated_of_type)
     if (count >= 2 && found_pairs.count (type) == 0)
       ++score.pair_fn;

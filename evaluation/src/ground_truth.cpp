@@ -1,3 +1,5 @@
+#include "json_file.h"
+
 #include <mid/evaluation/ground_truth.h>
 
 #include <nlohmann/json.hpp>
@@ -17,26 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool
-readJson (const fs::path& path, json& value)
-{
-  std::ifstream file (path);
-  if (!file) {
-    PCL_ERROR ("[mid::evaluation::loadBopScene] cannot open '%s'\n",
-               path.string().c_str());
-    return false;
-  }
-  try {
-    file >> value;
-  }
-  catch (const std::exception& error) {
-    PCL_ERROR ("[mid::evaluation::loadBopScene] '%s' is not valid JSON: %s\n",
-               path.string().c_str(),
-               error.what());
-    return false;
-  }
-  return true;
-}
+constexpr const char* kCaller = "mid::evaluation::loadBopScene";
 
 std::string
 maskName (int image, std::size_t instance)
@@ -67,10 +50,10 @@ loadBopScene (const std::string& folder, GroundTruthScene& scene)
   scene.clear();
   const fs::path root (folder);
   json gt, info;
-  if (!readJson (root / "scene_gt.json", gt))
+  if (!detail::readJsonFile (root / "scene_gt.json", kCaller, gt))
     return false;
   const bool has_info = fs::exists (root / "scene_gt_info.json");
-  if (has_info && !readJson (root / "scene_gt_info.json", info))
+  if (has_info && !detail::readJsonFile (root / "scene_gt_info.json", kCaller, info))
     return false;
   try {
     for (const auto& [key, entries] : gt.items()) {

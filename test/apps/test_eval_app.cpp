@@ -4,6 +4,8 @@
 #include "temporary_folder.h"
 
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -109,7 +111,8 @@ TEST (EvalApp, RefusesUnknownOptionsAndMissingValues)
         {" -report", "-report needs 1 value"},
         {" -report -frames", "-report needs 1 value"},
         {" -frames " + results.string(), "Unknown argument"},
-        {" -min_inside +0.5", "-min_inside must be a number, got '+0.5'"}}) {
+        {" -min_inside +0.5", "-min_inside must be a number, got '+0.5'"},
+        {" -max_tilt 0.5", "-max_tilt 0.5 (must be 1 or more)"}}) {
     SCOPED_TRACE (options);
     const auto run = mid::test::runCommand (command + options);
     EXPECT_FALSE (run.crashed);
@@ -153,4 +156,41 @@ TEST (EvalApp, PutsMethodsSideBySide)
   EXPECT_NE (wrong_names.exit_code, 0);
   EXPECT_NE (wrong_names.output.find ("-names gives 1 names for 2"), std::string::npos)
       << wrong_names.output;
+}
+
+TEST (EvalApp, ReportsRecallAgainstTheSharedSurfaceWhenTheDatasetHasDepth)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto dataset = writeDataset (folder), results = folder.path() / "results";
+  std::filesystem::create_directories (results / "000000");
+  std::ofstream (results / "000000" / "000000.json") << kPerfect;
+  const std::string command =
+      std::string (MID_EVAL_APP) + " " + dataset.string() + " " + results.string();
+  const auto without = mid::test::runCommand (command);
+  ASSERT_EQ (without.exit_code, 0) << without.output;
+  EXPECT_NE (without.output.find ("no shared-surface table"), std::string::npos)
+      << without.output;
+  EXPECT_EQ (without.output.find ("R (sharing >="), std::string::npos)
+      << without.output;
+
+  // A wall 0.8 m away, seen head-on: the boxes lie 297 mm apart on it (200 pixels), the poses
+  // 200 mm, so in the model frame the two boxes overlap by 50 x 147 mm: 30 to 99 cubes of
+  // 10 mm. Frame 0's two instances are found, frame 1's missed.
+  const auto scene = dataset / "000000";
+  std::ofstream (scene / "scene_camera.json")
+      << R"({"0": {"cam_K": [538, 0, 319.5, 0, 538, 239.5, 0, 0, 1], "depth_scale": 0.1},
+             "1": {"cam_K": [538, 0, 319.5, 0, 538, 239.5, 0, 0, 1], "depth_scale": 0.1}})";
+  std::filesystem::create_directories (scene / "depth");
+  const cv::Mat wall (480, 640, CV_16UC1, cv::Scalar (8000));
+  for (const char* image : {"000000.png", "000001.png"})
+    ASSERT_TRUE (cv::imwrite ((scene / "depth" / image).string(), wall));
+  const auto with = mid::test::runCommand (command + " -findable 0");
+  ASSERT_EQ (with.exit_code, 0) << with.output;
+  EXPECT_NE (
+      with.output.find ("| 000000     |   0 /   0 |   0 /   0 |   0 /   0 |   2 /   "
+                        "4 |   0 /   0 | 1.000 | 0.500 | 0.667 |"),
+      std::string::npos)
+      << with.output;
+  const auto none = mid::test::runCommand (command + " -shared_cell 0");
+  EXPECT_EQ (none.output.find ("R (sharing >="), std::string::npos) << none.output;
 }

@@ -195,3 +195,41 @@ TEST (ScoreSummary, SumsFramesAndPairsOnlyFromPairFrames)
   EXPECT_NE (report.find ("| S_ez"), std::string::npos);
   EXPECT_NE (report.find ("| total"), std::string::npos);
 }
+
+TEST (FrameScore, ListsTheSharedSurfaceOfFoundAndMissedInstances)
+{
+  // Type 1: three copies, the first two sharing 120 cubes, the third none; type 2 has two copies
+  // whose surface was not measured; type 3 appears once.
+  auto f = frame ({{1, 0}, {1, 150}, {1, 300}, {2, 450}, {2, 600}, {3, 750}});
+  const int shared[] = {120, 120, 0, -1, -1, 0};
+  for (std::size_t k = 0; k < f.instances.size(); ++k)
+    f.instances[k].shared_surface_cells = shared[k];
+  DetectionResult r;
+  r.objects.push_back ({{instance (0, 20), instance (150, 20)}});
+  r.objects.push_back ({{instance (450, 20), instance (600, 20)}});
+  const auto s = mid::evaluation::scoreFrame (f, r);
+  EXPECT_EQ (s.found_shared_cells, (std::vector<int>{120, 120}));
+  EXPECT_EQ (s.missed_shared_cells, (std::vector<int>{0}));
+}
+
+TEST (ScoreSummary, ReportsRecallAgainstTheSharedSurface)
+{
+  mid::evaluation::FrameScore score;
+  score.instance_tp = 3;
+  score.instance_fp = 1;
+  score.instance_fn = 4;
+  score.found_shared_cells = {0, 5, 150};
+  score.missed_shared_cells = {0, 20, 200, 40};
+  mid::evaluation::ScoreSummary summary;
+  summary.add (score, DetectionResult());
+  const std::string report =
+      mid::evaluation::formatSharedSurfaceReport ({{"S_ez", summary}}, 10);
+  // Bins 0 | 1-9 | 10-29 | 30-99 | >= 100; from 10 cubes on 1 of 4 instances were found:
+  // recall 0.25, precision 3 / 4, F1 2 * 0.75 * 0.25 / 1.
+  const std::string row =
+      "| S_ez       |   1 /   2 |   1 /   1 |   0 /   1 |   0 /   1 |   1 "
+      "/   2 | 0.750 | 0.250 | 0.375 |";
+  EXPECT_NE (report.find (row), std::string::npos) << report;
+  EXPECT_NE (report.find ("| total      |   1 /   2"), std::string::npos) << report;
+  EXPECT_NE (report.find ("R (sharing >= 10)"), std::string::npos) << report;
+}

@@ -35,6 +35,12 @@ struct ScoreSummary
   ///@{
   std::vector<double> times_ms, feature_times_ms, grouping_times_ms;
   ///@}
+  /** \brief The shared surface of every found and every missed annotated instance of a
+    * repeated type (FrameScore::found_shared_cells, FrameScore::missed_shared_cells).
+    */
+  ///@{
+  std::vector<int> found_shared_cells, missed_shared_cells;
+  ///@}
 
   /** \brief Add one frame; its pair counts only if it holds only pairs.
     * \param[in] score the frame's score (scoreFrame())
@@ -86,6 +92,20 @@ median (std::vector<double> values);
   */
 std::string
 formatReport (const std::map<std::string, ScoreSummary>& scenarios);
+
+/** \brief Recall against the surface an instance shares with another copy of its type
+  * (measureSharedSurface()): per scenario and in total, found / annotated instances of repeated
+  * types for 0, 1 to 9, 10 to 29, 30 to 99 and 100 or more shared cubes, then recall and F1 when
+  * only the instances sharing at least `min_shared_cells` count as annotated. Precision is the
+  * full table's: every reported instance still counts. Instances whose surface was not measured
+  * are left out of every column.
+  * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
+  * \param[in] min_shared_cells the shared cubes from which an instance counts as findable
+  * \return a Markdown table, one line per scenario and one for the total
+  */
+std::string
+formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
+                           int min_shared_cells);
 
 /** \brief One method's scores per scenario, with the method's name (see formatComparison()). */
 struct MethodScores

@@ -31,6 +31,13 @@ struct FrameScore
     * for pair scores).
     */
   bool pairs_only = false;
+  /** \brief The shared surface (GroundTruthInstance::shared_surface_cells) of each annotated
+    * instance of a repeated type that a true positive found, and of each one that none found;
+    * instances whose shared surface was not measured are left out.
+    */
+  ///@{
+  std::vector<int> found_shared_cells, missed_shared_cells;
+  ///@}
   /** \brief Relative pose errors between correctly detected instances of one object: rotation
     * (degrees) and translation (millimetres, at the first instance's object origin).
     */

@@ -27,6 +27,11 @@ struct GroundTruthInstance
   ///@}
   /** \brief Visible pixels. */
   int visible_pixels = 0;
+  /** \brief Visible surface this instance shares with another annotated instance of its type,
+    * in cubes of a grid in the model frame (see measureSharedSurface() in shared_surface.h);
+    * -1 while not measured.
+    */
+  int shared_surface_cells = -1;
 
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
