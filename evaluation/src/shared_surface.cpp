@@ -125,7 +125,7 @@ visibleCells (const GroundTruthFrame& frame,
   return cells;
 }
 
-/** The transition tilt between two views of a surface patch with unit normal n (Yu and Morel,
+/** The transition tilt between two views of a surface patch with unit normal n (Morel and Yu,
   * ASIFT, 2009): the largest foreshortening of the affine map between the two images, from the
   * absolute tilts t = 1 / cos (view, n) of each view and the angle between the views' longitudes
   * (their projections onto the patch).

@@ -22,7 +22,7 @@ namespace evaluation {
   * the surface the instance shows, each with its mean surface normal (from the depth of the
   * pixels two to either side) and the mean direction towards the camera, in the model frame.
   * Two instances of one type share the cubes both show with a transition tilt of at most
-  * `max_transition_tilt` between the two views (Yu and Morel, "ASIFT: A new framework for
+  * `max_transition_tilt` between the two views (Morel and Yu, "ASIFT: A new framework for
   * fully affine invariant image comparison", SIAM J. Imaging Sciences 2009: the foreshortening
   * of the affine map from one view of a patch to the other; SIFT hardly matches beyond 2). An
   * instance gets the largest count over the other instances of its type: 0 for a type
