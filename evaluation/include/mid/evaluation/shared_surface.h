@@ -49,7 +49,7 @@ measureSharedSurface (const cv::Mat& depth,
 
 /** \brief measureSharedSurface() for every frame of a BOP scene folder, reading the camera of
   * each image from scene_camera.json (cam_K, depth_scale in millimetres per depth unit) and its
-  * depth from depth/<image>.png (16 bit).
+  * depth from `depth/<image>.png` (16 bit).
   * \param[in] folder the scene folder the scene was loaded from (loadBopScene())
   * \param[in] cell_size edge of the grid's cubes, metres (> 0)
   * \param[in] max_transition_tilt largest transition tilt between the two views of a shared
