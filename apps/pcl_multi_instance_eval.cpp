@@ -63,7 +63,11 @@ printHelp (const char* program)
   print_info ("  -frames       also print each frame's counts on instances (true and "
               "false\n");
   print_info (
-      "                positives, false negatives) and its number of objects\n");
+      "                positives, false negatives), its number of objects and its "
+      "missed\n");
+  print_info ("                instances (type, visible pixels, shared surface, and "
+              "whether a\n");
+  print_info ("                false positive object lies on them)\n");
   print_info (
       "  -shared_cell M  when every scene has depth/ and scene_camera.json: edge "
       "of the\n");
@@ -115,6 +119,38 @@ readScenarios (const fs::path& dataset)
   return names;
 }
 
+/** The -frames lines of one frame: its counts, then each missed instance with its type,
+  * visible pixels and shared surface, and whether a false positive object lies on it.
+  */
+void
+printFrame (const std::string& scene,
+            int image,
+            const mid::evaluation::GroundTruthFrame& frame,
+            const mid::evaluation::DetectionResult& result,
+            const mid::evaluation::FrameScore& score)
+{
+  std::printf ("%s/%06d: %zu objects, instances TP %d FP %d FN %d\n",
+               scene.c_str(),
+               image,
+               result.objects.size(),
+               score.instance_tp,
+               score.instance_fp,
+               score.instance_fn);
+  for (const std::size_t k : score.missed_instances) {
+    const auto& instance = frame.instances[k];
+    std::printf ("  missed instance %zu: obj_id %d, %d pixels visible",
+                 k,
+                 instance.object_id,
+                 instance.visible_pixels);
+    if (instance.shared_surface_cells >= 0)
+      std::printf (", shares %d cubes", instance.shared_surface_cells);
+    const bool located = std::find (score.missed_but_located.begin(),
+                                    score.missed_but_located.end(),
+                                    k) != score.missed_but_located.end();
+    std::printf ("%s\n", located ? ", located by a false positive object" : "");
+  }
+}
+
 /** Every scene's frames scored against one method's results, per scenario; false if a scene or
   * a result cannot be read (the reader printed why).
   */
@@ -147,13 +183,7 @@ scoreMethod (const std::vector<fs::path>& scenes,
         return false;
       const auto score = mid::evaluation::scoreFrame (frame, result, min_inside);
       if (per_frame)
-        std::printf ("%s/%06d: %zu objects, instances TP %d FP %d FN %d\n",
-                     scene.c_str(),
-                     image,
-                     result.objects.size(),
-                     score.instance_tp,
-                     score.instance_fp,
-                     score.instance_fn);
+        printFrame (scene, image, frame, result, score);
       summary.add (score, result);
     }
   }

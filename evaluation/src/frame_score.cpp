@@ -77,7 +77,7 @@ scoreFrame (const GroundTruthFrame& truth,
   score.pairs_only = score.pairs_only && any_repeated;
 
   std::set<int> found_types, found_pairs;
-  std::set<int> found_instances;
+  std::set<int> found_instances, located_by_false_objects;
   for (const auto& object : result.objects) {
     std::vector<int> hit (object.instances.size());
     std::map<int, int> votes;
@@ -95,6 +95,9 @@ scoreFrame (const GroundTruthFrame& truth,
     const bool valid =
         type >= 0 && annotated_of_type[type] >= 2 && found_types.count (type) == 0;
     if (!valid) {
+      for (const int h : hit)
+        if (h >= 0)
+          located_by_false_objects.insert (h);
       score.instance_fp += static_cast<int> (object.instances.size());
       ++score.pair_fp;
       continue;
@@ -126,8 +129,12 @@ scoreFrame (const GroundTruthFrame& truth,
     if (annotated_of_type[annotated.object_id] < 2)
       continue;
     const bool found = found_instances.count (static_cast<int> (k)) > 0;
-    if (!found)
+    if (!found) {
       ++score.instance_fn;
+      score.missed_instances.push_back (k);
+      if (located_by_false_objects.count (static_cast<int> (k)) > 0)
+        score.missed_but_located.push_back (k);
+    }
     if (annotated.shared_surface_cells >= 0)
       (found ? score.found_shared_cells : score.missed_shared_cells)
           .push_back (annotated.shared_surface_cells);

@@ -191,6 +191,12 @@ TEST (EvalApp, ReportsRecallAgainstTheSharedSurfaceWhenTheDatasetHasDepth)
                         "4 |   0 /   0 | 1.000 | 0.500 | 0.667 |"),
       std::string::npos)
       << with.output;
+  const auto frames = mid::test::runCommand (command + " -frames");
+  EXPECT_NE (
+      frames.output.find ("000000/000001: 0 objects, instances TP 0 FP 0 FN 2\n"
+                          "  missed instance 0: obj_id 1, 0 pixels visible, shares "),
+      std::string::npos)
+      << frames.output;
   const auto none = mid::test::runCommand (command + " -shared_cell 0");
   EXPECT_EQ (none.output.find ("R (sharing >="), std::string::npos) << none.output;
 }

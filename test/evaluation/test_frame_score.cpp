@@ -196,7 +196,7 @@ TEST (ScoreSummary, SumsFramesAndPairsOnlyFromPairFrames)
   EXPECT_NE (report.find ("| total"), std::string::npos);
 }
 
-TEST (FrameScore, ListsTheSharedSurfaceOfFoundAndMissedInstances)
+TEST (FrameScore, ListsMissedInstancesAndTheSharedSurfaceOfFoundAndMissedOnes)
 {
   // Type 1: three copies, the first two sharing 120 cubes, the third none; type 2 has two copies
   // whose surface was not measured; type 3 appears once.
@@ -207,9 +207,18 @@ TEST (FrameScore, ListsTheSharedSurfaceOfFoundAndMissedInstances)
   DetectionResult r;
   r.objects.push_back ({{instance (0, 20), instance (150, 20)}});
   r.objects.push_back ({{instance (450, 20), instance (600, 20)}});
-  const auto s = mid::evaluation::scoreFrame (f, r);
+  auto s = mid::evaluation::scoreFrame (f, r);
   EXPECT_EQ (s.found_shared_cells, (std::vector<int>{120, 120}));
   EXPECT_EQ (s.missed_shared_cells, (std::vector<int>{0}));
+  EXPECT_EQ (s.missed_instances, (std::vector<std::size_t>{2}));
+  EXPECT_TRUE (s.missed_but_located.empty());
+
+  // A second model of type 1 on copies 2 and 0: copy 2 is located, but still missed.
+  r.objects.push_back ({{instance (300, 20), instance (0, 20)}});
+  s = mid::evaluation::scoreFrame (f, r);
+  EXPECT_EQ (s.instance_fn, 1);
+  EXPECT_EQ (s.missed_instances, (std::vector<std::size_t>{2}));
+  EXPECT_EQ (s.missed_but_located, (std::vector<std::size_t>{2}));
 }
 
 TEST (ScoreSummary, ReportsRecallAgainstTheSharedSurface)

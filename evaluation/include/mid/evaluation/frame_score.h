@@ -38,6 +38,14 @@ struct FrameScore
   ///@{
   std::vector<int> found_shared_cells, missed_shared_cells;
   ///@}
+  /** \brief The annotated instances of repeated types that no true positive found (indices into
+    * GroundTruthFrame::instances), and, of those, the ones on which an instance of a false
+    * positive object lies (a second model of an already found type, or a model of a type
+    * annotated once): found, but not counted.
+    */
+  ///@{
+  std::vector<std::size_t> missed_instances, missed_but_located;
+  ///@}
   /** \brief Relative pose errors between correctly detected instances of one object: rotation
     * (degrees) and translation (millimetres, at the first instance's object origin).
     */
