@@ -112,6 +112,12 @@ printHelp (const char* program)
   line ("-merge_fraction F",
         "or this share of the smaller model's landmarks",
         static_cast<double> (d.merge_fraction));
+  line ("-region_margin M",
+        "keypoints this far beyond a model's landmarks join its region, metres",
+        static_cast<double> (d.region_margin));
+  line ("-region_inliers N",
+        "RANSAC minimum inliers to merge two models through their regions",
+        static_cast<double> (d.min_region_merge_inliers));
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
@@ -129,6 +135,10 @@ printHelp (const char* program)
               "touching\n");
   print_info ("                      copies (half turns, pairs of pairs; the paper's "
               "behaviour)\n");
+  print_info (
+      "  -no_region_merge    do not merge models through the keypoints around their "
+      "instances\n");
+  print_info ("                      (the paper's behaviour)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
   print_info ("  -grouping G         triplets (ours, default), gcg "
@@ -150,6 +160,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_overlaps", 0},
                                       {"-keep_rows", 0},
                                       {"-keep_compounds", 0},
+                                      {"-no_region_merge", 0},
+                                      {"-region_margin", 1},
+                                      {"-region_inliers", 1},
                                       {"-json", 1},
                                       {"-models", 1},
                                       {"-max_keypoints", 1},
@@ -216,6 +229,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.resolve_overlaps = !pcl::console::find_switch (argc, argv, "-keep_overlaps");
   p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
   p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
+  p.merge_through_regions = !pcl::console::find_switch (argc, argv, "-no_region_merge");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -238,6 +252,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-min_inliers", p.min_inliers) &&
       parseNumber (argc, argv, "-merge_inliers", p.min_merge_inliers) &&
       parseNumber (argc, argv, "-merge_fraction", p.merge_fraction) &&
+      parseNumber (argc, argv, "-region_margin", p.region_margin) &&
+      parseNumber (argc, argv, "-region_inliers", p.min_region_merge_inliers) &&
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&

@@ -136,6 +136,14 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "merge_fraction",
              static_cast<double> (p.merge_fraction),
              "in [0, 1]");
+  c.require (p.region_margin >= 0.0f && std::isfinite (p.region_margin),
+             "region_margin",
+             static_cast<double> (p.region_margin),
+             "finite and >= 0");
+  c.require (p.min_region_merge_inliers >= 3,
+             "min_region_merge_inliers",
+             static_cast<double> (p.min_region_merge_inliers),
+             ">= 3");
   c.require (p.min_inlier_ratio >= 0.0f && p.min_inlier_ratio < 1.0f,
              "min_inlier_ratio",
              static_cast<double> (p.min_inlier_ratio),

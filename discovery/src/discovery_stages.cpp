@@ -8,6 +8,7 @@
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
+#include <mid/registration/region_model_merger.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 
@@ -82,6 +83,24 @@ resolveOverlaps (const DiscoveryParameters& p,
                                   return model.instances.size() < 2;
                                 }),
                 models.end());
+}
+
+/** Merge the models whose instances show a common surface around their landmarks
+  * (RegionModelMerger), with the pipeline's RANSAC settings.
+  */
+bool
+mergeThroughRegions (const DiscoveryParameters& p, DiscoveryResult& result)
+{
+  ModelInstanceDetector detector = makeDetector (p, nullptr);
+  detector.setMinInliers (p.min_region_merge_inliers);
+  RegionModelMerger merger;
+  merger.setInputKeypoints (result.keypoints);
+  merger.setInputDescriptors (result.descriptors);
+  merger.setDetector (detector);
+  merger.setRegionMargin (p.region_margin);
+  merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+  merger.setRefinementIterations (p.refinement_iterations);
+  return merger.merge (result.models);
 }
 
 /** Look for each model's instances among the keypoints no model uses yet. */
@@ -292,6 +311,8 @@ runStages (const DiscoveryParameters& p,
     return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
+  if (p.merge_through_regions && !mergeThroughRegions (p, result))
+    return false;
   if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
     return false;
   if (p.resolve_overlaps)

@@ -292,6 +292,8 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-merge_inliers 2",
                              "-merge_fraction 1.5",
                              "-merge_fraction -0.1",
+                             "-region_margin -0.01",
+                             "-region_inliers 2",
                              "-min_ratio -0.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");

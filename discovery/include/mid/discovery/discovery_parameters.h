@@ -144,6 +144,18 @@ struct DiscoveryParameters
   std::size_t min_merge_inliers = 10;
   float merge_fraction = 0.3f;
   ///@}
+  /** \brief Also merge models through the keypoints around their instances (not in the paper;
+    * see RegionModelMerger): two models of one product built on different faces share no
+    * landmark, but a copy of one often shows, next to its landmarks, surface that a copy of the
+    * other shows too. The keypoints around an instance are those within region_margin (metres,
+    * >= 0) of the box of its model's landmarks; a merge needs min_region_merge_inliers (>= 3)
+    * RANSAC inliers (with the detection's inlier threshold and ratio).
+    */
+  ///@{
+  bool merge_through_regions = true;
+  float region_margin = 0.02f;
+  std::size_t min_region_merge_inliers = 6;
+  ///@}
   /** \brief Resolve instances that lie on one physical object (not in the paper; see
     * instancesOverlap() and instancesAdjoin()): models with such instances (overlapping, or
     * two faces of one copy) are merged, and of two overlapping instances of one model only

@@ -1,0 +1,190 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/model_instance_detector.h>
+#include <mid/registration/object_model.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace mid {
+
+/** \brief Merges models of one object whose instances show a common surface in the keypoints
+  * around them, beyond the landmarks (not in Abbeloos et al.).
+  *
+  * A model holds only the keypoints that self-matching paired between its copies, so two
+  * models of one product built on different faces (one pair of copies showing the front,
+  * another the side) share no landmark, and the paper's model-against-model search finds
+  * nothing. Yet a copy of one model often shows, next to its landmarks, some of the surface a
+  * copy of the other model shows: the rest of a label around a can, a face seen at a slant. This
+  * class searches for it. The region of an instance is the keypoints it observes, and the
+  * keypoints no instance observes that lie within the region margin of the box of its model's
+  * landmarks (computeLandmarkBox()) placed by its pose, and nearer to it than to the box of
+  * any other instance: regions never share a keypoint, and the free keypoints between two
+  * touching copies go to the nearer one (a keypoint in two regions would match itself, and one
+  * of a touching copy would link another product). For each pair of models, in order, and each
+  * instance a of the first and b of the second, a's region is taken as a model in the first
+  * model's frame and searched for in b's region by descriptor matching and 3-point RANSAC
+  * (ModelInstanceDetector, with the RANSAC settings of the detector given). The first pair
+  * that succeeds gives where b's copy sits in the first model's frame, and the second model is
+  * merged into the first (mergeModel(); its instances whose poses coincide with the first's
+  * join them), then refined (refineModel()).
+  *
+  * Random draws are the detector's: the same input and seed give the same merges.
+  */
+class RegionModelMerger
+{
+public:
+  /** \brief The frame's keypoints, which the models' instances index. Required. */
+  ///@{
+  void
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
+  const KeypointCloud::ConstPtr&
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
+  ///@}
+
+  /** \brief One descriptor per keypoint, in the keypoints' order. Required. */
+  ///@{
+  void
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors)
+  {
+    descriptors_ = descriptors;
+  }
+  const SIFTDescriptorCloud::ConstPtr&
+  getInputDescriptors () const
+  {
+    return descriptors_;
+  }
+  ///@}
+
+  /** \brief The search between two regions: its descriptor distance, inlier threshold, minimum
+    * inliers and inlier ratio, iterations and seed are used; its model, keypoints, descriptors,
+    * candidates and instance count are set for each pair. Default: a default
+    * ModelInstanceDetector with 6 minimum inliers (with the detection's 5, models of different
+    * products whose prints share the same kind of text merged on the benchmark's development
+    * frames).
+    */
+  ///@{
+  void
+  setDetector (const ModelInstanceDetector& detector)
+  {
+    detector_ = detector;
+  }
+  const ModelInstanceDetector&
+  getDetector () const
+  {
+    return detector_;
+  }
+  ///@}
+
+  /** \brief How far a region reaches beyond the landmarks' box, on every side (metres, >= 0;
+    * default 20 mm).
+    */
+  ///@{
+  void
+  setRegionMargin (float margin)
+  {
+    margin_ = margin;
+  }
+  float
+  getRegionMargin () const
+  {
+    return margin_;
+  }
+  ///@}
+
+  /** \brief Instances of the two models whose poses coincide within this rotation (radians)
+    * and distance (metres) once merged are one instance (defaults: 10 deg, 10 mm, as
+    * DiscoveryParameters::duplicate_angle and duplicate_distance).
+    */
+  ///@{
+  void
+  setDuplicateThresholds (float max_angle, float max_distance)
+  {
+    max_angle_ = max_angle;
+    max_distance_ = max_distance;
+  }
+  float
+  getDuplicateAngle () const
+  {
+    return max_angle_;
+  }
+  float
+  getDuplicateDistance () const
+  {
+    return max_distance_;
+  }
+  ///@}
+
+  /** \brief Alternations of the joint refinement after each merge (>= 0; default 20). */
+  ///@{
+  void
+  setRefinementIterations (int iterations)
+  {
+    refinement_iterations_ = iterations;
+  }
+  int
+  getRefinementIterations () const
+  {
+    return refinement_iterations_;
+  }
+  ///@}
+
+  /** \brief Merge the models that show a common surface around their instances.
+    * \param[in,out] models the models; merged ones are removed, the others keep their order
+    * \return false (with a PCL_ERROR; models unchanged) if keypoints or descriptors are
+    * missing or differ in number, a parameter (of this class or of the detector) is out of its
+    * range, or an instance refers to a keypoint the frame does not have
+    */
+  bool
+  merge (ObjectModels& models);
+
+  /** \brief How many models the last merge() merged into others (0 after a failure). */
+  std::size_t
+  getMergedCount () const
+  {
+    return merged_;
+  }
+
+private:
+  /** \brief What became of a pair of models. */
+  enum class PairOutcome {
+    merged,
+    apart,
+    failed ///< the detector refused its input (its PCL_ERROR says why)
+  };
+
+  /** \brief merge() after its checks, on a copy of the models; false if a search failed. */
+  bool
+  mergeChecked (ObjectModels& models, std::size_t& merged) const;
+
+  /** \brief Try to merge models[j] into models[i]. */
+  PairOutcome
+  mergePair (ObjectModels& models, std::size_t i, std::size_t j) const;
+
+  KeypointCloud::ConstPtr keypoints_;
+  SIFTDescriptorCloud::ConstPtr descriptors_;
+  ModelInstanceDetector detector_ = defaultDetector();
+  float margin_ = 0.02f;
+  float max_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
+  float max_distance_ = 0.01f;
+  int refinement_iterations_ = 20;
+  std::size_t merged_ = 0;
+
+  /** \brief A default detector with 6 minimum inliers. */
+  static ModelInstanceDetector
+  defaultDetector ()
+  {
+    ModelInstanceDetector detector;
+    detector.setMinInliers (6);
+    return detector;
+  }
+};
+
+} // namespace mid
