@@ -84,12 +84,14 @@ protected:
   {
     mid::ObjectModel model;
     for (int l = 0; l < count; ++l) {
+      const int point = first + l;
+      const int observation = copies.front() * kPoints + point;
       pcl::PointNormal landmark;
-      landmark.getVector3fMap() = frame * object_[static_cast<std::size_t> (first + l)];
+      landmark.getVector3fMap() = frame * object_[static_cast<std::size_t> (point)];
       landmark.getNormalVector3fMap() = -frame.linear().col (2);
       model.landmarks.push_back (landmark);
-      model.descriptors.push_back ((*descriptors_)[static_cast<std::size_t> (
-          copies.front() * kPoints + first + l)]);
+      model.descriptors.push_back (
+          (*descriptors_)[static_cast<std::size_t> (observation)]);
       model.descriptor_landmarks.push_back (l);
     }
     for (const int copy : copies) {
