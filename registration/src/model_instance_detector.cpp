@@ -94,13 +94,20 @@ ModelInstanceDetector::checkInputs() const
                    keypoints_->size());
         return false;
       }
+  return hasValidParameters();
+}
+
+bool
+ModelInstanceDetector::hasValidParameters() const
+{
   if (!(max_descriptor_distance_ > 0.0f) || !(inlier_threshold_ > 0.0f) ||
       min_inliers_ < 3 || !(min_inlier_ratio_ >= 0.0f && min_inlier_ratio_ < 1.0f) ||
       max_iterations_ < 1) {
     PCL_ERROR (
-        "%s Invalid parameter: descriptor distance %g, inlier threshold %g (> 0), min "
-        "inliers %zu (>= 3), min inlier ratio %g (in [0, 1)), iterations %d (>= 1).\n",
-        name,
+        "[mid::ModelInstanceDetector] Invalid parameter: descriptor distance %g, "
+        "inlier "
+        "threshold %g (> 0), min inliers %zu (>= 3), min inlier ratio %g (in [0, 1)), "
+        "iterations %d (>= 1).\n",
         static_cast<double> (max_descriptor_distance_),
         static_cast<double> (inlier_threshold_),
         min_inliers_,

@@ -1,82 +1,16 @@
-#include <mid/registration/landmark_box.h>
+#include <mid/registration/instance_region.h>
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/region_model_merger.h>
 
 #include <pcl/console/print.h>
 
-#include <algorithm>
-#include <limits>
+#include <cmath>
 #include <vector>
 
 namespace mid {
 
 namespace {
-
-/** For each keypoint, the instance whose region holds it, numbered over all models in order,
-  * or -1. A keypoint an instance observes is in that instance's region. Any other keypoint is
-  * in the region of the instance whose landmark box (boxes[m] of its model, placed by its pose)
-  * lies nearest to it, if that box lies within `margin`; in no region on a tie. So regions are
-  * disjoint, and the free keypoints between two touching copies go to the nearer one.
-  */
-std::vector<int>
-regionOwners (const KeypointCloud& frame,
-              const ObjectModels& models,
-              const std::vector<LandmarkBox>& boxes,
-              float margin)
-{
-  std::vector<int> owner (frame.size(), -1);
-  std::vector<float> nearest (frame.size(), std::numeric_limits<float>::infinity());
-  std::vector<bool> observed (frame.size(), false);
-  int id = 0;
-  for (const auto& model : models)
-    for (const auto& instance : model.instances) {
-      for (const auto k : instance.keypoints) {
-        owner[static_cast<std::size_t> (k)] = id;
-        observed[static_cast<std::size_t> (k)] = true;
-      }
-      ++id;
-    }
-  id = 0;
-  for (std::size_t m = 0; m < models.size(); ++m)
-    for (const auto& instance : models[m].instances) {
-      const Eigen::Matrix4f to_model = instance.pose.inverse();
-      for (std::size_t k = 0; k < frame.size(); ++k) {
-        if (observed[k])
-          continue;
-        const float distance = boxes[m].distanceTo (to_model.topLeftCorner<3, 3>() *
-                                                        frame[k].getVector3fMap() +
-                                                    to_model.topRightCorner<3, 1>());
-        if (distance > margin || distance > nearest[k])
-          continue;
-        owner[k] = distance < nearest[k] ? id : -1;
-        nearest[k] = distance;
-      }
-      ++id;
-    }
-  return owner;
-}
-
-/** The number of the first instance of models[m] in regionOwners(). */
-int
-firstInstanceId (const ObjectModels& models, std::size_t m)
-{
-  int id = 0;
-  for (std::size_t n = 0; n < m; ++n)
-    id += static_cast<int> (models[n].instances.size());
-  return id;
-}
-
-/** The keypoints in the region of instance `id` (sorted). */
-pcl::Indices
-regionOf (const std::vector<int>& owner, int id)
-{
-  pcl::Indices region;
-  for (std::size_t k = 0; k < owner.size(); ++k)
-    if (owner[k] == id)
-      region.push_back (static_cast<pcl::index_t> (k));
-  return region;
-}
 
 /** The keypoints of a region as a model in the frame of the instance at `pose`: one landmark
   * and one descriptor per keypoint.
@@ -106,32 +40,24 @@ regionModel (const KeypointCloud& frame,
 } // namespace
 
 RegionModelMerger::PairOutcome
-RegionModelMerger::mergePair (ObjectModels& models, std::size_t i, std::size_t j) const
+RegionModelMerger::mergePair (ObjectModels& models,
+                              const std::vector<std::vector<pcl::Indices>>& regions,
+                              std::size_t i,
+                              std::size_t j) const
 {
-  std::vector<LandmarkBox> boxes;
-  for (const auto& model : models)
-    boxes.push_back (computeLandmarkBox (model));
-  if (!boxes[i].valid || !boxes[j].valid)
-    return PairOutcome::apart;
-  const std::vector<int> owner = regionOwners (*keypoints_, models, boxes, margin_);
-  const int first_i = firstInstanceId (models, i),
-            first_j = firstInstanceId (models, j);
   for (std::size_t a = 0; a < models[i].instances.size(); ++a) {
-    const pcl::Indices region_a = regionOf (owner, first_i + static_cast<int> (a));
-    if (region_a.size() < 3)
+    if (regions[i][a].size() < 3)
       continue;
     ModelInstanceDetector detector = detector_;
     detector.setModel (std::make_shared<const ObjectModel> (regionModel (
-        *keypoints_, *descriptors_, region_a, models[i].instances[a].pose)));
+        *keypoints_, *descriptors_, regions[i][a], models[i].instances[a].pose)));
     detector.setInputKeypoints (keypoints_);
     detector.setInputDescriptors (descriptors_);
     detector.setMaxInstances (1);
     for (std::size_t b = 0; b < models[j].instances.size(); ++b) {
-      auto region_b = pcl::make_shared<pcl::Indices> (
-          regionOf (owner, first_j + static_cast<int> (b)));
-      if (region_b->size() < 3)
+      if (regions[j][b].size() < 3)
         continue;
-      detector.setCandidates (region_b);
+      detector.setCandidates (pcl::make_shared<const pcl::Indices> (regions[j][b]));
       ModelInstances found;
       if (!detector.detect (found))
         return PairOutcome::failed;
@@ -151,17 +77,21 @@ RegionModelMerger::mergePair (ObjectModels& models, std::size_t i, std::size_t j
 bool
 RegionModelMerger::mergeChecked (ObjectModels& models, std::size_t& merged) const
 {
+  // One pass over the pairs; the regions change with every merge.
+  auto regions = computeInstanceRegions (*keypoints_, models, margin_);
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = i + 1; j < models.size();) {
-      const PairOutcome outcome = mergePair (models, i, j);
+      const PairOutcome outcome = mergePair (models, regions, i, j);
       if (outcome == PairOutcome::failed)
         return false;
       if (outcome == PairOutcome::apart) {
         ++j;
         continue;
       }
+      // models[j] is gone: the next model now stands at j.
       models.erase (models.begin() + static_cast<std::ptrdiff_t> (j));
       ++merged;
+      regions = computeInstanceRegions (*keypoints_, models, margin_);
     }
   return true;
 }
@@ -192,6 +122,8 @@ RegionModelMerger::merge (ObjectModels& models)
         refinement_iterations_);
     return false;
   }
+  if (!detector_.hasValidParameters())
+    return false;
   for (const auto& model : models)
     for (const auto& instance : model.instances)
       for (const auto k : instance.keypoints)
@@ -202,6 +134,7 @@ RegionModelMerger::merge (ObjectModels& models)
                      keypoints_->size());
           return false;
         }
+  // Merges change the models: work on a copy, so that a failure leaves them as they were.
   ObjectModels merged = models;
   std::size_t count = 0;
   if (!mergeChecked (merged, count))

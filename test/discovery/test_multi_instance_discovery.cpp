@@ -269,6 +269,7 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
   parameters.split_chains = false;
   parameters.split_compounds = false;
   parameters.resolve_overlaps = false;
+  parameters.merge_through_regions = false;
   paper.setParameters (parameters);
   mid::DiscoveryResult chained;
   ASSERT_TRUE (paper.discover (chained));

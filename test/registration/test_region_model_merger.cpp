@@ -1,9 +1,11 @@
 #include "rigid_motion.h"
 
+#include <mid/registration/instance_region.h>
 #include <mid/registration/region_model_merger.h>
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -23,7 +25,7 @@ constexpr int kPoints = kLeft + kMiddle + kRight;
   * each object point with its own random descriptor (the same on every copy of that object, up
   * to a little noise).
   */
-class RegionModelMerger : public ::testing::Test
+class RegionModelMergerTest : public ::testing::Test
 {
 protected:
   void
@@ -41,7 +43,7 @@ protected:
       }
     };
     add (-0.08f, -0.005f, 0.03f, kLeft);
-    add (-0.008f, 0.008f, 0.008f, kMiddle);
+    add (-0.005f, 0.005f, 0.008f, kMiddle);
     add (0.005f, 0.08f, 0.03f, kRight);
     std::uniform_real_distribution<float> bin (0.0f, 100.0f);
     for (auto& appearance : appearances_)
@@ -51,6 +53,42 @@ protected:
           value = bin (rng);
         appearance.push_back (descriptor);
       }
+  }
+
+  /** Give object 1 the appearance of object 0 on the first `count` points of the middle band
+    * (two products that share a small print).
+    */
+  void
+  shareMiddlePoints (int count)
+  {
+    for (int p = kLeft; p < kLeft + count; ++p)
+      appearances_[1][static_cast<std::size_t> (p)] =
+          appearances_[0][static_cast<std::size_t> (p)];
+  }
+
+  /** Expect one model with an instance on each of `copies` copies, each where its copy is
+    * relative to the first copy's instance (the true relative poses).
+    */
+  void
+  expectOneModelAtTheTruePoses (const mid::ObjectModels& models, int copies) const
+  {
+    ASSERT_EQ (models.size(), 1u);
+    const mid::ModelInstances& instances = models.front().instances;
+    ASSERT_EQ (instances.size(), static_cast<std::size_t> (copies));
+    const auto on_copy = [&] (int copy) {
+      for (const auto& instance : instances)
+        if (copyOf (instance) == copy)
+          return instance.pose;
+      ADD_FAILURE() << "no instance on copy " << copy;
+      return Eigen::Matrix4f (Eigen::Matrix4f::Identity());
+    };
+    for (int copy = 1; copy < copies; ++copy) {
+      const auto [angle, distance] =
+          poseError (on_copy (copy) * on_copy (0).inverse(),
+                     poses_[static_cast<std::size_t> (copy)] * poses_[0].inverse());
+      EXPECT_LT (angle, 1e-3) << "copy " << copy;
+      EXPECT_LT (distance, 1e-4) << "copy " << copy;
+    }
   }
 
   /** Add a copy of object `type` (0 or 1) at `pose` to the frame. */
@@ -135,15 +173,16 @@ protected:
 
 } // namespace
 
-TEST_F (RegionModelMerger, MergesTwoModelsOfOneObjectThroughTheSurfaceNeitherHolds)
+TEST_F (RegionModelMergerTest, MergesTwoModelsOfOneObjectThroughTheSurfaceNeitherHolds)
 {
   // Four copies of one plate; copies 0 and 1 paired on the left part, 2 and 3 on the right.
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.3f, 0.0f, 0.8f), 0.4f));
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.1f, 0.1f, 0.85f), 2.1f));
   addCopy (0, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f, {0, 1, 4}));
   addCopy (0, rigidMotion (Eigen::Vector3f (0.3f, 0.05f, 0.9f), 3.0f));
+  const Eigen::Isometry3f frame_a = rigidMotion ({0.01f, 0.02f, 0.0f}, 0.3f);
   mid::ObjectModels models{
-      modelOf (0, kLeft, rigidMotion ({0.01f, 0.02f, 0.0f}, 0.3f), {0, 1}),
+      modelOf (0, kLeft, frame_a, {0, 1}),
       modelOf (
           kLeft + kMiddle, kRight, rigidMotion ({0.0f, -0.03f, 0.01f}, -0.7f), {2, 3})};
   // The models share no landmark and no copy: the paper's model comparison has nothing to
@@ -151,49 +190,76 @@ TEST_F (RegionModelMerger, MergesTwoModelsOfOneObjectThroughTheSurfaceNeitherHol
   mid::RegionModelMerger merge = merger();
   ASSERT_TRUE (merge.merge (models));
   EXPECT_EQ (merge.getMergedCount(), 1u);
-  ASSERT_EQ (models.size(), 1u);
-  ASSERT_EQ (models.front().instances.size(), 4u);
-  // Every instance where its copy is, relative to copy 0's: the true relative poses.
-  const mid::ModelInstances& instances = models.front().instances;
-  const auto on_copy = [&] (int copy) {
-    for (const auto& instance : instances)
-      if (copyOf (instance) == copy)
-        return instance.pose;
-    ADD_FAILURE() << "no instance on copy " << copy;
-    return Eigen::Matrix4f (Eigen::Matrix4f::Identity());
-  };
-  for (int copy = 1; copy < 4; ++copy) {
-    const auto [angle, distance] =
-        poseError (on_copy (copy) * on_copy (0).inverse(),
-                   poses_[static_cast<std::size_t> (copy)] * poses_[0].inverse());
-    EXPECT_LT (angle, 1e-3) << "copy " << copy;
-    EXPECT_LT (distance, 1e-4) << "copy " << copy;
-  }
+  expectOneModelAtTheTruePoses (models, 4);
+  // The second model's landmarks join the first's, in the first model's frame.
+  ASSERT_EQ (models.front().landmarks.size(),
+             static_cast<std::size_t> (kLeft + kRight));
+  for (int l = 0; l < kRight; ++l)
+    EXPECT_LT ((models.front()
+                    .landmarks[static_cast<std::size_t> (kLeft + l)]
+                    .getVector3fMap() -
+                frame_a * object_[static_cast<std::size_t> (kLeft + kMiddle + l)])
+                   .norm(),
+               1e-4f);
 }
 
-TEST_F (RegionModelMerger, KeepsModelsOfDifferentObjectsApart)
+TEST_F (RegionModelMergerTest, MergesEveryModelOfOneObjectInOnePass)
 {
-  // The same geometry, but copies 2 and 3 are another object: nothing in common to find.
+  // Three models of one plate: after the second merges into the first, the third (now second
+  // in the list) is compared with the first too.
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.3f, 0.0f, 0.8f), 0.4f));
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.1f, 0.1f, 0.85f), 2.1f));
-  addCopy (1, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f));
-  addCopy (1, rigidMotion (Eigen::Vector3f (0.3f, 0.05f, 0.9f), 3.0f));
-  const mid::ObjectModels before{
+  addCopy (0, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f));
+  addCopy (0, rigidMotion (Eigen::Vector3f (0.3f, 0.05f, 0.9f), 3.0f));
+  addCopy (0, rigidMotion (Eigen::Vector3f (-0.2f, -0.25f, 0.95f), -2.5f));
+  addCopy (0, rigidMotion (Eigen::Vector3f (0.2f, 0.25f, 0.85f), 1.0f));
+  mid::ObjectModels models{
       modelOf (0, kLeft, Eigen::Isometry3f::Identity(), {0, 1}),
-      modelOf (kLeft + kMiddle, kRight, Eigen::Isometry3f::Identity(), {2, 3})};
-  mid::ObjectModels models = before;
+      modelOf (kLeft + kMiddle, kRight, Eigen::Isometry3f::Identity(), {2, 3}),
+      modelOf (0, kLeft, rigidMotion ({0.0f, 0.0f, 0.02f}, 1.0f), {4, 5})};
   mid::RegionModelMerger merge = merger();
   ASSERT_TRUE (merge.merge (models));
-  EXPECT_EQ (merge.getMergedCount(), 0u);
-  ASSERT_EQ (models.size(), 2u);
-  for (std::size_t m = 0; m < 2; ++m) {
-    ASSERT_EQ (models[m].instances.size(), 2u);
-    for (std::size_t i = 0; i < 2; ++i)
-      EXPECT_TRUE (models[m].instances[i].pose.isApprox (before[m].instances[i].pose));
+  EXPECT_EQ (merge.getMergedCount(), 2u);
+  expectOneModelAtTheTruePoses (models, 6);
+}
+
+TEST_F (RegionModelMergerTest, MergesOnTheMinimumInliersOfCommonSurface)
+{
+  // Two objects of one shape that share the appearance of a few points of the middle band:
+  // with the default 6 inliers, 5 common points keep them apart and 6 merge them.
+  for (const int common : {5, 6}) {
+    SCOPED_TRACE (common);
+    SetUp();
+    shareMiddlePoints (common);
+    keypoints_->clear();
+    descriptors_->clear();
+    poses_.clear();
+    addCopy (0, rigidMotion (Eigen::Vector3f (-0.3f, 0.0f, 0.8f), 0.4f));
+    addCopy (0, rigidMotion (Eigen::Vector3f (-0.1f, 0.1f, 0.85f), 2.1f));
+    addCopy (1, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f));
+    addCopy (1, rigidMotion (Eigen::Vector3f (0.3f, 0.05f, 0.9f), 3.0f));
+    mid::ObjectModels models{
+        modelOf (0, kLeft, Eigen::Isometry3f::Identity(), {0, 1}),
+        modelOf (kLeft + kMiddle, kRight, Eigen::Isometry3f::Identity(), {2, 3})};
+    const mid::ObjectModels before = models;
+    mid::RegionModelMerger merge = merger();
+    ASSERT_TRUE (merge.merge (models));
+    if (common < 6) {
+      EXPECT_EQ (merge.getMergedCount(), 0u);
+      ASSERT_EQ (models.size(), 2u);
+      for (std::size_t m = 0; m < 2; ++m)
+        for (std::size_t i = 0; i < 2; ++i)
+          EXPECT_TRUE (
+              models[m].instances[i].pose.isApprox (before[m].instances[i].pose));
+    }
+    else {
+      EXPECT_EQ (merge.getMergedCount(), 1u);
+      expectOneModelAtTheTruePoses (models, 4);
+    }
   }
 }
 
-TEST_F (RegionModelMerger, AKeypointAroundTwoTouchingCopiesMatchesNeitherWay)
+TEST_F (RegionModelMergerTest, AKeypointAroundTwoTouchingCopiesMatchesNeitherWay)
 {
   // Copy 2, another object, touches copy 0 side by side. With regions 10 cm wide, each copy's
   // free keypoints lie around both: matched to themselves, they would give copy 0's pose to
@@ -211,23 +277,89 @@ TEST_F (RegionModelMerger, AKeypointAroundTwoTouchingCopiesMatchesNeitherWay)
   EXPECT_EQ (models.size(), 2u);
 }
 
-TEST_F (RegionModelMerger, RefusesUnusableInputWithoutTouchingTheModels)
+TEST (InstanceRegions, FreeKeypointsGoToTheNearestBoxWithinTheMargin)
+{
+  // One model whose landmark box spans x in [-45, 45] mm and y in [-20, 20] mm (a 21 x 9 grid,
+  // trimmed to its 5th and 95th percentiles), with instances at x = -50 mm and, turned by a
+  // half turn, at x = 50 mm (boxes 10 mm apart), and one with a non-finite pose; a second
+  // model with one instance at x = 300 mm.
+  mid::ObjectModel model;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      pcl::PointNormal landmark;
+      landmark.getVector3fMap() =
+          Eigen::Vector3f (-0.05f + 0.005f * static_cast<float> (i),
+                           -0.02f + 0.005f * static_cast<float> (j),
+                           0.0f);
+      model.landmarks.push_back (landmark);
+    }
+  mid::KeypointCloud keypoints;
+  const auto keypoint = [&keypoints] (float x) {
+    pcl::PointNormal k;
+    k.getVector3fMap() = Eigen::Vector3f (x, 0.0f, 0.8f);
+    keypoints.push_back (k);
+    return static_cast<pcl::index_t> (keypoints.size() - 1);
+  };
+  mid::ObjectModel other = model;
+  model.instances.resize (3);
+  model.instances[0].pose = rigidMotion (Eigen::Vector3f (-0.05f, 0.0f, 0.8f)).matrix();
+  // The half turn written exactly, so that a keypoint at x = 0 is exactly as far from both.
+  model.instances[1].pose << -1, 0, 0, 0.05f, 0, -1, 0, 0, 0, 0, 1, 0.8f, 0, 0, 0, 1;
+  model.instances[2].pose.setConstant (std::numeric_limits<float>::quiet_NaN());
+  other.instances.resize (1);
+  other.instances[0].pose = rigidMotion (Eigen::Vector3f (0.3f, 0.0f, 0.8f)).matrix();
+  const pcl::index_t inside_0 = keypoint (-0.03f), inside_1 = keypoint (0.03f),
+                     nearer_0 = keypoint (-0.002f), midway = keypoint (0.0f),
+                     beyond = keypoint (-0.13f), near_other = keypoint (0.31f),
+                     observed = keypoint (0.04f);
+  model.instances[0].keypoints = {
+      observed}; // inside instance 1's box, but observed by 0
+  model.instances[0].landmarks = {0};
+  const auto regions =
+      mid::computeInstanceRegions (keypoints, mid::ObjectModels{model, other}, 0.02f);
+  ASSERT_EQ (regions.size(), 2u);
+  ASSERT_EQ (regions[0].size(), 3u);
+  ASSERT_EQ (regions[1].size(), 1u);
+  EXPECT_EQ (regions[0][0], (pcl::Indices{inside_0, nearer_0, observed}));
+  EXPECT_EQ (regions[0][1], (pcl::Indices{inside_1}));
+  EXPECT_TRUE (regions[0][2].empty());
+  EXPECT_EQ (regions[1][0], (pcl::Indices{near_other}));
+  // 5 mm from both boxes: neither; 35 mm beyond the first box: outside the 20 mm margin.
+  for (const auto& model_regions : regions)
+    for (const auto& region : model_regions)
+      for (const auto k : region) {
+        EXPECT_NE (k, midway);
+        EXPECT_NE (k, beyond);
+      }
+}
+
+TEST_F (RegionModelMergerTest, RefusesUnusableInputWithoutTouchingTheModels)
 {
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.3f, 0.0f, 0.8f), 0.4f));
   addCopy (0, rigidMotion (Eigen::Vector3f (-0.1f, 0.1f, 0.85f), 2.1f));
   addCopy (0, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f));
+  // Models that would merge (test MergesTwoModels... above): a refusal leaves them as they are.
   const mid::ObjectModels before{
       modelOf (0, kLeft, Eigen::Isometry3f::Identity(), {0, 1}),
       modelOf (kLeft + kMiddle, kRight, Eigen::Isometry3f::Identity(), {1, 2})};
-  const auto expectRefused = [&] (mid::RegionModelMerger merge,
-                                  const mid::ObjectModels& input) {
+  const auto expectRefused = [] (mid::RegionModelMerger merge,
+                                 const mid::ObjectModels& input) {
     mid::ObjectModels models = input;
     EXPECT_FALSE (merge.merge (models));
     EXPECT_EQ (merge.getMergedCount(), 0u);
     ASSERT_EQ (models.size(), input.size());
-    for (std::size_t m = 0; m < models.size(); ++m)
-      EXPECT_EQ (models[m].instances.size(), input[m].instances.size());
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      EXPECT_EQ (models[m].landmarks.size(), input[m].landmarks.size());
+      EXPECT_EQ (models[m].descriptors.size(), input[m].descriptors.size());
+      ASSERT_EQ (models[m].instances.size(), input[m].instances.size());
+      for (std::size_t i = 0; i < models[m].instances.size(); ++i)
+        EXPECT_EQ (models[m].instances[i].pose, input[m].instances[i].pose);
+    }
   };
+  mid::ObjectModels merged = before;
+  ASSERT_TRUE (merger().merge (merged));
+  ASSERT_EQ (merged.size(), 1u);
+
   expectRefused (mid::RegionModelMerger(), before);
   mid::RegionModelMerger short_descriptors = merger();
   auto fewer = pcl::make_shared<mid::SIFTDescriptorCloud> (*descriptors_);
@@ -242,6 +374,8 @@ TEST_F (RegionModelMerger, RefusesUnusableInputWithoutTouchingTheModels)
   detector.setInlierThreshold (-1.0f);
   bad_detector.setDetector (detector);
   expectRefused (bad_detector, before);
+  // Also when no search would run (no models): the parameter is wrong all the same.
+  expectRefused (bad_detector, mid::ObjectModels());
   mid::ObjectModels outside = before;
   outside.back().instances.back().keypoints.back() =
       static_cast<pcl::index_t> (keypoints_->size());

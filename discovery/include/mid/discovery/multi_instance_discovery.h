@@ -12,8 +12,9 @@ namespace mid {
   *
   * Runs, in order: SIFTKeypointExtractor, SelfMatcher, CorrespondenceRejectorPPFTriplet,
   * TransformationSpaceClustering, MultiInstanceModelBuilder, then ModelInstanceDetector twice:
-  * each model against the others (models found to be one object are merged) and against the
-  * keypoints no model uses yet (new instances extend the model). Every stage is also usable
+  * each model against the others (models found to be one object are merged; also through the
+  * keypoints around their instances, RegionModelMerger) and against the keypoints no model uses
+  * yet (new instances extend the model). Every stage is also usable
   * on its own; this class only wires them with one DiscoveryParameters.
   *
   * \code

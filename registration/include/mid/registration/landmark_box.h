@@ -8,7 +8,8 @@ namespace mid {
 
 /** \brief Where a model's landmarks lie, as a box in the model frame: centred on the landmarks,
   * along their principal axes, between a low and a high percentile of their coordinates along
-  * each axis, so that a stray landmark does not widen it.
+  * each axis, so that a stray landmark does not widen it (it still takes part in the
+  * covariance that gives the axes, so it may tilt them).
   *
   * The landmarks are points of the object's surface, so the box is a lower bound of the space
   * the object fills: a face, or the part of the body between the faces the landmarks cover.

@@ -210,6 +210,12 @@ public:
   bool
   detect (ModelInstances& instances) const;
 
+  /** \brief Check the parameters' ranges (those detect() checks besides its input).
+    * \return false (with a PCL_ERROR naming the parameters) if one is out of its range
+    */
+  bool
+  hasValidParameters () const;
+
 private:
   bool
   checkInputs () const;

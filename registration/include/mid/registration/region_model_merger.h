@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <memory>
+#include <vector>
 
 namespace mid {
 
@@ -17,24 +19,27 @@ namespace mid {
   * another the side) share no landmark, and the paper's model-against-model search finds
   * nothing. Yet a copy of one model often shows, next to its landmarks, some of the surface a
   * copy of the other model shows: the rest of a label around a can, a face seen at a slant. This
-  * class searches for it. The region of an instance is the keypoints it observes, and the
-  * keypoints no instance observes that lie within the region margin of the box of its model's
-  * landmarks (computeLandmarkBox()) placed by its pose, and nearer to it than to the box of
-  * any other instance: regions never share a keypoint, and the free keypoints between two
-  * touching copies go to the nearer one (a keypoint in two regions would match itself, and one
-  * of a touching copy would link another product). For each pair of models, in order, and each
-  * instance a of the first and b of the second, a's region is taken as a model in the first
-  * model's frame and searched for in b's region by descriptor matching and 3-point RANSAC
-  * (ModelInstanceDetector, with the RANSAC settings of the detector given). The first pair
-  * that succeeds gives where b's copy sits in the first model's frame, and the second model is
-  * merged into the first (mergeModel(); its instances whose poses coincide with the first's
-  * join them), then refined (refineModel()).
+  * class searches for it, in one pass over the pairs of models in their order: for each pair
+  * and each instance a of the first and b of the second, a's region (computeInstanceRegions():
+  * what a observes, and the free keypoints within the region margin of its model's landmark box
+  * and nearest to it), expressed in the first model's frame, is searched for in b's region by
+  * descriptor matching and 3-point RANSAC (ModelInstanceDetector, with the RANSAC settings of
+  * the detector given). The first pair of instances that succeeds gives where b's copy sits in
+  * the first model's frame; the second model is merged into the first (mergeModel(); its
+  * instances whose poses coincide with the first's join them), the merged model refined
+  * (refineModel()), and the regions computed again. A pair of models compared before a merge
+  * is not compared again.
   *
   * Random draws are the detector's: the same input and seed give the same merges.
   */
 class RegionModelMerger
 {
 public:
+  /** \brief Shared pointer to a merger. */
+  using Ptr = std::shared_ptr<RegionModelMerger>;
+  /** \brief Shared pointer to a const merger. */
+  using ConstPtr = std::shared_ptr<const RegionModelMerger>;
+
   /** \brief The frame's keypoints, which the models' instances index. Required. */
   ///@{
   void
@@ -164,9 +169,12 @@ private:
   bool
   mergeChecked (ObjectModels& models, std::size_t& merged) const;
 
-  /** \brief Try to merge models[j] into models[i]. */
+  /** \brief Try to merge models[j] into models[i], given the instances' regions. */
   PairOutcome
-  mergePair (ObjectModels& models, std::size_t i, std::size_t j) const;
+  mergePair (ObjectModels& models,
+             const std::vector<std::vector<pcl::Indices>>& regions,
+             std::size_t i,
+             std::size_t j) const;
 
   KeypointCloud::ConstPtr keypoints_;
   SIFTDescriptorCloud::ConstPtr descriptors_;
