@@ -1,3 +1,5 @@
+#include "pcd_header.h"
+
 #include <mid/io/pcd_reader.h>
 
 #include <pcl/common/io.h>
@@ -7,13 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <limits>
-#include <locale>
-#include <sstream>
 #include <system_error>
 
 namespace mid {
@@ -33,97 +30,6 @@ isEmptyFile (const std::string& path)
 {
   std::ifstream file (path, std::ios::binary | std::ios::ate);
   return file.tellg() <= 0;
-}
-
-/** LZF, the compression of binary_compressed PCD files, turns 3 bytes into at most 264. */
-constexpr std::uint64_t kMaxCompressionRatio = 100;
-
-bool
-startsWithKeyword (const std::string& token, const char* keyword)
-{
-  return token.compare (0, std::char_traits<char>::length (keyword), keyword) == 0;
-}
-
-std::uint64_t
-saturatingProduct (std::uint64_t a, std::uint64_t b)
-{
-  if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a)
-    return std::numeric_limits<std::uint64_t>::max();
-  return a * b;
-}
-
-/** A header number as PCL's stream extraction could see it, at most 2^32 (PCL keeps 32 bits). */
-std::uint64_t
-headerNumber (const std::string& token)
-{
-  return std::min<std::uint64_t> (std::strtoull (token.c_str(), nullptr, 10),
-                                  std::uint64_t{1} << 32U);
-}
-
-/** PCL's PCDReader::readHeader allocates the point data (points x point step bytes) as soon as
-  * it reads the POINTS line, before it compares anything with the file size: a 160-byte header
-  * made it allocate and zero 4 GiB, and a SIZE value too large for an int gave it a point step
-  * of 4 GiB (both found while fuzzing). This scan reads the header lines the way PCL does (a line
-  * counts while it starts with a header keyword, also after DATA), bounds the point step from
-  * above by every way PCL computes it (sum of SIZE values; sizes times counts), and refuses a
-  * header that announces more point data than even a compressed body of this file could hold.
-  */
-bool
-announcesPlausibleSize (const std::string& path,
-                        std::uint64_t file_size,
-                        std::string& problem)
-{
-  static const char* const kOtherKeywords[] = {
-      "VERSION", "TYPE", "WIDTH", "HEIGHT", "VIEWPOINT", "DATA"};
-  std::ifstream file (path, std::ios::binary);
-  std::string line;
-  std::uint64_t values = 0, largest_size = 8, point_step = 0, points = 0;
-  while (std::getline (file, line)) {
-    if (line.empty())
-      continue;
-    std::istringstream tokens (line);
-    tokens.imbue (std::locale::classic());
-    std::string keyword, token;
-    if (!(tokens >> keyword))
-      break;
-    if (keyword[0] == '#')
-      continue;
-    if (startsWithKeyword (keyword, "FIELDS") ||
-        startsWithKeyword (keyword, "COLUMNS") ||
-        startsWithKeyword (keyword, "COUNT")) {
-      const bool counts = startsWithKeyword (keyword, "COUNT");
-      std::uint64_t sum = 0;
-      while (tokens >> token)
-        sum += counts ? headerNumber (token) : 1;
-      values = std::max (values, sum);
-    }
-    else if (startsWithKeyword (keyword, "SIZE")) {
-      std::uint64_t sum = 0;
-      while (tokens >> token) {
-        sum += headerNumber (token);
-        largest_size = std::max (largest_size, headerNumber (token));
-      }
-      point_step = std::max (point_step, sum);
-    }
-    else if (startsWithKeyword (keyword, "POINTS")) {
-      if (tokens >> token)
-        points = std::max (points, headerNumber (token));
-    }
-    else if (std::none_of (
-                 std::begin (kOtherKeywords),
-                 std::end (kOtherKeywords),
-                 [&keyword] (const char* k) { return startsWithKeyword (keyword, k); }))
-      break;
-  }
-  point_step = std::max (point_step, saturatingProduct (values, largest_size));
-  const std::uint64_t announced = saturatingProduct (points, point_step);
-  if (announced > saturatingProduct (kMaxCompressionRatio, file_size)) {
-    problem = "its header announces " + std::to_string (points) + " points of up to " +
-              std::to_string (point_step) + " bytes, far more than its " +
-              std::to_string (file_size) + " bytes can hold";
-    return false;
-  }
-  return true;
 }
 
 /** A binary_compressed body starts with its compressed and uncompressed sizes; PCL only warns
@@ -260,7 +166,8 @@ readCheckedPCD (const std::string& path,
   std::error_code error;
   const std::uint64_t file_size = std::filesystem::file_size (path, error);
   std::string reason;
-  if (error || !announcesPlausibleSize (path, file_size, reason))
+  std::ifstream file (path, std::ios::binary);
+  if (error || !detail::checkPCDHeader (file, file_size, reason))
     return refuse ("'" + path + "' is not a valid PCD file: " + reason);
 
   pcl::PCDReader reader;

@@ -13,9 +13,11 @@ namespace io {
   *
   * PCL's pcl::PCDReader trusts the header it reads: fuzzing found headers that make it allocate
   * gigabytes, read or write past its buffers, throw, or leave a blob that
-  * pcl::fromPCLPointCloud2 cannot convert safely (see doc/quality_gates.md). This function checks
-  * the header against the file size, the field layout against the point step, a compressed body
-  * against the header, and the data read against the header, before and after PCL reads it.
+  * pcl::fromPCLPointCloud2 cannot convert safely (see doc/quality_gates.md). This function accepts
+  * only a header written exactly as the PCD format specifies (keywords in their order, plain
+  * numbers, one value per field) that announces no more data than the file could hold, then
+  * checks the field layout against the point step, a compressed body against the header, and
+  * the data read against the header, before and after PCL reads it.
   * A blob it returns can be passed to pcl::fromPCLPointCloud2 for any point type. Every point
   * cloud file this project reads (frames and model data) goes through it.
   * \param[in] path the PCD file
