@@ -118,6 +118,12 @@ printHelp (const char* program)
   line ("-region_inliers N",
         "RANSAC minimum inliers to merge two models through their regions",
         static_cast<double> (d.min_region_merge_inliers));
+  line ("-leftover_desc_dist D",
+        "largest descriptor distance of a match in the leftover round",
+        static_cast<double> (d.leftover_descriptor_distance));
+  line ("-leftover_margin M",
+        "keypoints this far from every instance's box are left over, metres",
+        static_cast<double> (d.leftover_margin));
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
@@ -138,6 +144,9 @@ printHelp (const char* program)
   print_info (
       "  -no_region_merge    do not merge models through the keypoints around their "
       "instances\n");
+  print_info ("                      (the paper's behaviour)\n");
+  print_info ("  -no_leftovers       no second round on the keypoints outside every "
+              "instance\n");
   print_info ("                      (the paper's behaviour)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
@@ -161,6 +170,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_rows", 0},
                                       {"-keep_compounds", 0},
                                       {"-no_region_merge", 0},
+                                      {"-no_leftovers", 0},
+                                      {"-leftover_desc_dist", 1},
+                                      {"-leftover_margin", 1},
                                       {"-region_margin", 1},
                                       {"-region_inliers", 1},
                                       {"-json", 1},
@@ -230,6 +242,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
   p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
   p.merge_through_regions = !pcl::console::find_switch (argc, argv, "-no_region_merge");
+  p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -254,6 +267,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-merge_fraction", p.merge_fraction) &&
       parseNumber (argc, argv, "-region_margin", p.region_margin) &&
       parseNumber (argc, argv, "-region_inliers", p.min_region_merge_inliers) &&
+      parseNumber (argc, argv, "-leftover_desc_dist", p.leftover_descriptor_distance) &&
+      parseNumber (argc, argv, "-leftover_margin", p.leftover_margin) &&
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&

@@ -140,6 +140,14 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "region_margin",
              static_cast<double> (p.region_margin),
              "finite and >= 0");
+  c.require (p.leftover_descriptor_distance > 0.0f,
+             "leftover_descriptor_distance",
+             static_cast<double> (p.leftover_descriptor_distance),
+             "> 0");
+  c.require (p.leftover_margin >= 0.0f && std::isfinite (p.leftover_margin),
+             "leftover_margin",
+             static_cast<double> (p.leftover_margin),
+             "finite and >= 0");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -4,6 +4,7 @@
 #include <mid/features/self_matcher.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/instance_overlap.h>
+#include <mid/registration/instance_region.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
@@ -189,7 +190,8 @@ groupWithTriplets (const DiscoveryParameters& p,
 bool
 mergeMatchingModels (const DiscoveryParameters& p,
                      const KeypointCloud& frame,
-                     ObjectModels& models)
+                     ObjectModels& models,
+                     std::size_t first_new)
 {
   std::string problem;
   if (!validateDiscoveryParameters (p, problem)) {
@@ -197,7 +199,7 @@ mergeMatchingModels (const DiscoveryParameters& p,
     return false;
   }
   for (std::size_t i = 0; i < models.size(); ++i)
-    for (std::size_t j = i + 1; j < models.size();) {
+    for (std::size_t j = std::max (i + 1, first_new); j < models.size();) {
       auto points = pcl::make_shared<KeypointCloud>();
       modelAsKeypoints (models[i], *points);
       auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
@@ -233,6 +235,77 @@ mergeMatchingModels (const DiscoveryParameters& p,
 }
 
 namespace {
+
+bool
+runStages (const DiscoveryParameters& p,
+           DiscoveryResult& result,
+           const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
+           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized);
+
+/** The keypoints of the frame outside every instance's region (DiscoveryParameters::
+  * leftover_margin), with their descriptors and image keypoints; back[k] is the frame index
+  * of leftover keypoint k.
+  */
+void
+selectLeftovers (const DiscoveryParameters& p,
+                 const DiscoveryResult& result,
+                 DiscoveryResult& leftovers,
+                 pcl::Indices& back)
+{
+  std::vector<bool> taken (result.keypoints->size(), false);
+  for (const auto& regions :
+       computeInstanceRegions (*result.keypoints, result.models, p.leftover_margin))
+    for (const auto& region : regions)
+      for (const auto k : region)
+        taken[static_cast<std::size_t> (k)] = true;
+  leftovers = DiscoveryResult();
+  leftovers.keypoints = pcl::make_shared<KeypointCloud>();
+  leftovers.descriptors = pcl::make_shared<SIFTDescriptorCloud>();
+  back.clear();
+  for (std::size_t k = 0; k < taken.size(); ++k) {
+    if (taken[k])
+      continue;
+    back.push_back (static_cast<pcl::index_t> (k));
+    leftovers.keypoints->push_back ((*result.keypoints)[k]);
+    leftovers.descriptors->push_back ((*result.descriptors)[k]);
+    if (!result.image_keypoints.empty())
+      leftovers.image_keypoints.push_back (result.image_keypoints[k]);
+  }
+}
+
+/** The second round on the keypoints left over (DiscoveryParameters::discover_leftovers): its
+  * models join result's, merged with them where they match.
+  */
+bool
+discoverLeftovers (const DiscoveryParameters& p,
+                   const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
+                   const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized,
+                   DiscoveryResult& result)
+{
+  DiscoveryResult leftovers;
+  pcl::Indices back;
+  selectLeftovers (p, result, leftovers, back);
+  DiscoveryParameters second = p;
+  second.discover_leftovers = false;
+  second.max_descriptor_distance = p.leftover_descriptor_distance;
+  if (!runStages (second, leftovers, surface, organized))
+    return false;
+  if (leftovers.models.empty())
+    return true;
+  const std::size_t first_new = result.models.size();
+  for (auto& model : leftovers.models) {
+    for (auto& instance : model.instances)
+      for (auto& k : instance.keypoints)
+        k = back[static_cast<std::size_t> (k)];
+    result.models.push_back (std::move (model));
+  }
+  if (p.merge_models &&
+      !mergeMatchingModels (p, *result.keypoints, result.models, first_new))
+    return false;
+  if (p.resolve_overlaps)
+    resolveOverlaps (p, *result.keypoints, result.models);
+  return true;
+}
 
 /** discoverFromKeypoints() without its cleanup on failure. */
 bool
@@ -318,6 +391,11 @@ runStages (const DiscoveryParameters& p,
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
   result.timing_ms.emplace_back ("detection", watch.getTime());
+
+  watch.reset();
+  if (p.discover_leftovers && !discoverLeftovers (p, surface, organized, result))
+    return false;
+  result.timing_ms.emplace_back ("leftovers", watch.getTime());
   return true;
 }
 

@@ -294,6 +294,8 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-merge_fraction -0.1",
                              "-region_margin -0.01",
                              "-region_inliers 2",
+                             "-leftover_desc_dist 0",
+                             "-leftover_margin -0.01",
                              "-min_ratio -0.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");

@@ -74,6 +74,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "clustering",
                             "modeling",
                             "detection",
+                            "leftovers",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;

@@ -71,7 +71,8 @@ addInstance (mid::ObjectModel& model,
 mid::ObjectModels
 mergeTwoModels (std::size_t count,
                 std::size_t shared,
-                const mid::DiscoveryParameters& parameters = {})
+                const mid::DiscoveryParameters& parameters = {},
+                std::size_t first_new = 0)
 {
   const mid::ObjectModel first = makeModel (40, 1);
   mid::ObjectModels models{first, makeModel (count, 2, &first, shared)};
@@ -81,7 +82,7 @@ mergeTwoModels (std::size_t count,
   addInstance (models[1], mid::test::rigidMotion ({0.2f, 0.0f, 0.8f}, -0.7f), frame);
   addInstance (models[1], mid::test::rigidMotion ({0.0f, -0.1f, 0.9f}, 1.2f), frame);
   std::string problem;
-  EXPECT_EQ (mid::mergeMatchingModels (parameters, frame, models),
+  EXPECT_EQ (mid::mergeMatchingModels (parameters, frame, models, first_new),
              mid::validateDiscoveryParameters (parameters, problem));
   return models;
 }
@@ -124,6 +125,14 @@ TEST (ModelMergingStage, MergesASmallModelOnAShareOfItsLandmarks)
   mid::DiscoveryParameters count_only;
   count_only.merge_fraction = 1.0f;
   EXPECT_EQ (mergeTwoModels (12, 6, count_only).size(), 2u);
+}
+
+TEST (ModelMergingStage, ComparesOnlyThePairsWithANewModel)
+{
+  // The same two models as above: compared when the second is new (first_new 1), not when
+  // both were compared before (first_new 2, as after the leftover round with no new model).
+  EXPECT_EQ (mergeTwoModels (40, 14, {}, 1).size(), 1u);
+  EXPECT_EQ (mergeTwoModels (40, 14, {}, 2).size(), 2u);
 }
 
 TEST (ModelMergingStage, RefusesParametersOutOfRange)

@@ -36,12 +36,15 @@ discoverFromKeypoints (
   * \param[in] parameters the RANSAC and merge parameters
   * \param[in] frame the keypoints the models' instances refer to
   * \param[in,out] models the models; merged ones are removed
+  * \param[in] first_new only pairs with at least one model from this index on are compared
+  * (the models before it were compared with each other already); 0 compares every pair
   * \return false (with a PCL_ERROR, models unchanged) if a parameter is out of its range
   * (validateDiscoveryParameters()) or the detector refuses a model
   */
 bool
 mergeMatchingModels (const DiscoveryParameters& parameters,
                      const KeypointCloud& frame,
-                     ObjectModels& models);
+                     ObjectModels& models,
+                     std::size_t first_new = 0);
 
 } // namespace mid
