@@ -158,6 +158,17 @@ TEST (LeftoverRound, TheFirstRoundAloneFindsOnlyTheAlikeProduct)
   EXPECT_EQ (result.models.size(), 2u);
 }
 
+TEST (LeftoverRound, NothingLeftOverChangesNothing)
+{
+  // Only product A: every keypoint lies on one of its copies, the second round gets none.
+  mid::DiscoveryResult result = makeFrame();
+  result.keypoints->resize (90);
+  result.descriptors->resize (90);
+  ASSERT_TRUE (mid::discoverFromKeypoints (mid::DiscoveryParameters(), result));
+  ASSERT_EQ (result.models.size(), 1u);
+  EXPECT_TRUE (holdsCopies (result.models[0], kPosesA));
+}
+
 TEST (LeftoverRound, RefusesParametersOutOfRange)
 {
   mid::DiscoveryParameters parameters;
