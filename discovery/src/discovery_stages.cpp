@@ -4,7 +4,7 @@
 #include <mid/features/self_matcher.h>
 #include <mid/registration/correspondence_rejection_ppf_triplet.h>
 #include <mid/registration/instance_overlap.h>
-#include <mid/registration/instance_region.h>
+#include <mid/registration/landmark_box.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/model_merging.h>
 #include <mid/registration/model_refinement.h>
@@ -242,9 +242,34 @@ runStages (const DiscoveryParameters& p,
            const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
            const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized);
 
-/** The keypoints of the frame outside every instance's region (DiscoveryParameters::
-  * leftover_margin), with their descriptors and image keypoints; back[k] is the frame index
-  * of leftover keypoint k.
+/** Marks the keypoints an instance observes, and those within `margin` of the box of its
+  * model's landmarks placed by its pose (all of them where boxes overlap).
+  */
+void
+markInstances (const KeypointCloud& keypoints,
+               const ObjectModels& models,
+               float margin,
+               std::vector<bool>& taken)
+{
+  for (const auto& model : models) {
+    const LandmarkBox box = computeLandmarkBox (model);
+    for (const auto& instance : model.instances) {
+      for (const auto k : instance.keypoints)
+        taken[static_cast<std::size_t> (k)] = true;
+      if (!box.valid || !instance.pose.allFinite())
+        continue;
+      const Eigen::Affine3f to_model (instance.pose.inverse());
+      for (std::size_t k = 0; k < keypoints.size(); ++k)
+        if (!taken[k] &&
+            box.distanceTo (to_model * keypoints[k].getVector3fMap()) <= margin)
+          taken[k] = true;
+    }
+  }
+}
+
+/** The keypoints of the frame that no instance observes and that lie farther than
+  * DiscoveryParameters::leftover_margin from every instance's box, with their descriptors and
+  * image keypoints; back[k] is the frame index of leftover keypoint k.
   */
 void
 selectLeftovers (const DiscoveryParameters& p,
@@ -253,11 +278,8 @@ selectLeftovers (const DiscoveryParameters& p,
                  pcl::Indices& back)
 {
   std::vector<bool> taken (result.keypoints->size(), false);
-  for (const auto& regions :
-       computeInstanceRegions (*result.keypoints, result.models, p.leftover_margin))
-    for (const auto& region : regions)
-      for (const auto k : region)
-        taken[static_cast<std::size_t> (k)] = true;
+  markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
+  const bool with_pixels = result.image_keypoints.size() == taken.size();
   leftovers = DiscoveryResult();
   leftovers.keypoints = pcl::make_shared<KeypointCloud>();
   leftovers.descriptors = pcl::make_shared<SIFTDescriptorCloud>();
@@ -268,7 +290,7 @@ selectLeftovers (const DiscoveryParameters& p,
     back.push_back (static_cast<pcl::index_t> (k));
     leftovers.keypoints->push_back ((*result.keypoints)[k]);
     leftovers.descriptors->push_back ((*result.descriptors)[k]);
-    if (!result.image_keypoints.empty())
+    if (with_pixels)
       leftovers.image_keypoints.push_back (result.image_keypoints[k]);
   }
 }

@@ -96,10 +96,13 @@ parseCount (const std::string& token, std::uint64_t max, std::uint64_t& value)
          value <= max;
 }
 
+/** A number PCL's float extraction reads without failing (a finite float, not out of its
+  * range: a failed extraction would leave the next VIEWPOINT values uninitialized).
+  */
 bool
-isFiniteReal (const std::string& token)
+isFiniteFloat (const std::string& token)
 {
-  double value = 0.0;
+  float value = 0.0f;
   const char* end = token.data() + token.size();
   const auto [stop, error] = std::from_chars (token.data(), end, value);
   return error == std::errc() && stop == end && std::isfinite (value);
@@ -180,9 +183,11 @@ readValues (Keyword keyword,
     if (!one_per_field())
       return false;
     for (std::size_t i = 0; i < values.size(); ++i) {
-      const bool known = values[i] == "I" || values[i] == "U" || values[i] == "F";
+      const bool known =
+          values[i] == "I" || values[i] == "U" || values[i] == "F" || values[i] == "B";
       if (!known ||
-          (values[i] == "F" && header.sizes[i] != 4 && header.sizes[i] != 8)) {
+          (values[i] == "F" && header.sizes[i] != 4 && header.sizes[i] != 8) ||
+          (values[i] == "B" && header.sizes[i] != 1)) {
         problem = "its TYPE '" + values[i] + "' does not fit a field of " +
                   std::to_string (header.sizes[i]) + " bytes";
         return false;
@@ -198,7 +203,7 @@ readValues (Keyword keyword,
     header.has_height = true;
     return single_count (header.height);
   case Keyword::kViewpoint:
-    if (values.size() == 7 && std::all_of (values.begin(), values.end(), isFiniteReal))
+    if (values.size() == 7 && std::all_of (values.begin(), values.end(), isFiniteFloat))
       return true;
     problem = "its VIEWPOINT line must hold seven numbers (tx ty tz qw qx qy qz)";
     return false;
@@ -222,6 +227,10 @@ checkWhole (const Header& header, std::uint64_t file_size, std::string& problem)
 {
   if (!header.has_type || !header.has_points || !header.has_data) {
     problem = "the header lacks one of FIELDS, SIZE, TYPE, POINTS and DATA";
+    return false;
+  }
+  if (header.has_height && !header.has_width) {
+    problem = "it has a HEIGHT line but no WIDTH line";
     return false;
   }
   const std::uint64_t width = header.has_width ? header.width : header.points;

@@ -20,10 +20,12 @@ namespace detail {
   * this check accepts only headers on which it cannot go wrong: the keywords spelled exactly, in
   * the order the format gives (VERSION, FIELDS, SIZE, TYPE, COUNT, WIDTH, HEIGHT, VIEWPOINT,
   * POINTS, DATA; VERSION, COUNT, WIDTH, HEIGHT and VIEWPOINT may be missing), each at most once,
-  * printable ASCII only, one SIZE, TYPE and COUNT value per field, sizes 1, 2, 4 or 8 bytes, plain
-  * decimal numbers within PCL's int, WIDTH x HEIGHT equal to POINTS, seven VIEWPOINT numbers, a
+  * printable ASCII only, one SIZE, TYPE and COUNT value per field, sizes 1, 2, 4 or 8 bytes (I, U,
+  * F of 4 or 8, B of 1), plain decimal numbers within PCL's int, no HEIGHT without WIDTH,
+  * WIDTH x HEIGHT equal to POINTS, seven VIEWPOINT numbers that are finite floats, a
   * known DATA kind, no header line after DATA, and no more point data than the file could hold
-  * (its size times the largest LZF expansion). Every file PCL's writer produces passes.
+  * (its size times the largest LZF expansion). Every file PCL's writer produces passes, unless
+  * its viewpoint is not finite.
   * \param[in] stream the file, positioned at its start
   * \param[in] file_size the file's size in bytes
   * \param[out] problem what is wrong with the header; empty on success

@@ -160,13 +160,30 @@ TEST (LeftoverRound, TheFirstRoundAloneFindsOnlyTheAlikeProduct)
 
 TEST (LeftoverRound, NothingLeftOverChangesNothing)
 {
-  // Only product A: every keypoint lies on one of its copies, the second round gets none.
-  mid::DiscoveryResult result = makeFrame();
-  result.keypoints->resize (90);
-  result.descriptors->resize (90);
+  // Only product A: every keypoint lies on one of its copies, the second round gets none, and
+  // the result is that of the first round alone.
+  const auto only_a = [] {
+    mid::DiscoveryResult frame = makeFrame();
+    frame.keypoints->resize (90);
+    frame.descriptors->resize (90);
+    return frame;
+  };
+  mid::DiscoveryResult result = only_a(), first_round = only_a();
+  mid::DiscoveryParameters paper;
+  paper.discover_leftovers = false;
   ASSERT_TRUE (mid::discoverFromKeypoints (mid::DiscoveryParameters(), result));
+  ASSERT_TRUE (mid::discoverFromKeypoints (paper, first_round));
   ASSERT_EQ (result.models.size(), 1u);
   EXPECT_TRUE (holdsCopies (result.models[0], kPosesA));
+  ASSERT_EQ (first_round.models.size(), 1u);
+  const auto& a = result.models[0];
+  const auto& b = first_round.models[0];
+  ASSERT_EQ (a.instances.size(), b.instances.size());
+  EXPECT_EQ (a.landmarks.size(), b.landmarks.size());
+  for (std::size_t i = 0; i < a.instances.size(); ++i) {
+    EXPECT_EQ (a.instances[i].keypoints, b.instances[i].keypoints);
+    EXPECT_TRUE (a.instances[i].pose.isApprox (b.instances[i].pose, 1e-6f));
+  }
 }
 
 TEST (LeftoverRound, RefusesParametersOutOfRange)

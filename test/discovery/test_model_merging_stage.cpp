@@ -71,8 +71,7 @@ addInstance (mid::ObjectModel& model,
 mid::ObjectModels
 mergeTwoModels (std::size_t count,
                 std::size_t shared,
-                const mid::DiscoveryParameters& parameters = {},
-                std::size_t first_new = 0)
+                const mid::DiscoveryParameters& parameters = {})
 {
   const mid::ObjectModel first = makeModel (40, 1);
   mid::ObjectModels models{first, makeModel (count, 2, &first, shared)};
@@ -82,7 +81,7 @@ mergeTwoModels (std::size_t count,
   addInstance (models[1], mid::test::rigidMotion ({0.2f, 0.0f, 0.8f}, -0.7f), frame);
   addInstance (models[1], mid::test::rigidMotion ({0.0f, -0.1f, 0.9f}, 1.2f), frame);
   std::string problem;
-  EXPECT_EQ (mid::mergeMatchingModels (parameters, frame, models, first_new),
+  EXPECT_EQ (mid::mergeMatchingModels (parameters, frame, models),
              mid::validateDiscoveryParameters (parameters, problem));
   return models;
 }
@@ -129,10 +128,29 @@ TEST (ModelMergingStage, MergesASmallModelOnAShareOfItsLandmarks)
 
 TEST (ModelMergingStage, ComparesOnlyThePairsWithANewModel)
 {
-  // The same two models as above: compared when the second is new (first_new 1), not when
-  // both were compared before (first_new 2, as after the leftover round with no new model).
-  EXPECT_EQ (mergeTwoModels (40, 14, {}, 1).size(), 1u);
-  EXPECT_EQ (mergeTwoModels (40, 14, {}, 2).size(), 2u);
+  // Three models of one object, each sharing 14 landmarks with the first: with first_new 2,
+  // the two old ones are not compared with each other (they were before), the new one merges
+  // into the first.
+  const mid::ObjectModel first = makeModel (40, 1);
+  mid::ObjectModels models{
+      first, makeModel (40, 2, &first, 14), makeModel (40, 3, &first, 14)};
+  mid::KeypointCloud frame;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const float shift = 0.3f * static_cast<float> (m);
+    addInstance (
+        models[m], mid::test::rigidMotion ({-0.1f + shift, 0.0f, 0.8f}), frame);
+    addInstance (
+        models[m], mid::test::rigidMotion ({-0.1f + shift, 0.2f, 0.9f}, 0.6f), frame);
+  }
+  mid::ObjectModels merged = models;
+  ASSERT_TRUE (mid::mergeMatchingModels ({}, frame, merged, 2));
+  ASSERT_EQ (merged.size(), 2u);
+  EXPECT_EQ (merged[0].instances.size(), 4u); // the first and the new one
+  EXPECT_EQ (merged[1].instances.size(), 2u); // the second, not compared with the first
+  // Compared in full (first_new 0), all three merge.
+  merged = models;
+  ASSERT_TRUE (mid::mergeMatchingModels ({}, frame, merged, 0));
+  EXPECT_EQ (merged.size(), 1u);
 }
 
 TEST (ModelMergingStage, RefusesParametersOutOfRange)

@@ -166,8 +166,9 @@ struct DiscoveryParameters
   /** \brief Look for more instances among the keypoints no model uses. */
   bool detect_additional_instances = true;
   /** \brief A second discovery round on the keypoints left over (not in the paper): every stage
-    * again, on the keypoints that lie farther than leftover_margin (metres, >= 0) from the box
-    * of every instance found (computeInstanceRegions()), self-matched among themselves up to
+    * again, on the keypoints that no instance observes and that lie farther than leftover_margin
+    * (metres, >= 0) from the box of every instance found (computeLandmarkBox() placed by the
+    * instance's pose), self-matched among themselves up to
     * leftover_descriptor_distance (> 0). Their own best matches often lay on a product found
     * already, and between copies of one product many lie above max_descriptor_distance
     * (doc/benchmark.md). The new models are then merged with the first round's
