@@ -38,6 +38,15 @@ makeCloud ()
   return cloud;
 }
 
+/** readCheckedPCD without the viewpoint. */
+bool
+readChecked (const std::string& path, pcl::PCLPointCloud2& blob, std::string& problem)
+{
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  return mid::io::readCheckedPCD (path, blob, origin, orientation, problem);
+}
+
 /** A replacement of some consecutive header lines ("" removes them), and what the file then is. */
 struct HeaderEdit
 {
@@ -76,9 +85,7 @@ protected:
     header.replace (at, edit.lines.size() + 1, edit.replacement);
     const std::string path = folder_.file ("edited.pcd");
     std::ofstream (path, std::ios::binary) << header << body_;
-    Eigen::Vector4f origin;
-    Eigen::Quaternionf orientation;
-    return mid::io::readCheckedPCD (path, blob, origin, orientation, problem);
+    return readChecked (path, blob, problem);
   }
 
   const Cloud cloud_ = makeCloud();
@@ -125,11 +132,8 @@ TEST_F (PCDReaderHeaders, ReadsEveryEncodingPCLWrites)
   ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (compressed, cloud_), 0);
   for (const std::string& path : {ascii, compressed}) {
     pcl::PCLPointCloud2 blob;
-    Eigen::Vector4f origin;
-    Eigen::Quaternionf orientation;
     std::string problem;
-    ASSERT_TRUE (mid::io::readCheckedPCD (path, blob, origin, orientation, problem))
-        << path << ": " << problem;
+    ASSERT_TRUE (readChecked (path, blob, problem)) << path << ": " << problem;
     Cloud read;
     pcl::fromPCLPointCloud2 (blob, read);
     ASSERT_EQ (read.size(), cloud_.size());
@@ -166,11 +170,8 @@ TEST_F (PCDReaderHeaders, ReadsABoolFieldAsPCLWritesIt)
   const std::string path = folder_.file ("bool.pcd");
   ASSERT_EQ (pcl::PCDWriter().writeBinary (path, written), 0);
   pcl::PCLPointCloud2 blob;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
   std::string problem;
-  ASSERT_TRUE (mid::io::readCheckedPCD (path, blob, origin, orientation, problem))
-      << problem;
+  ASSERT_TRUE (readChecked (path, blob, problem)) << problem;
   // PCL's writer names the padding as a field of its own ("_").
   const int f = pcl::getFieldIndex (blob, "flag");
   ASSERT_GE (f, 0);
@@ -193,11 +194,8 @@ TEST_F (PCDReaderHeaders, ReadsAnUnorganizedCloudWithoutWidthAndHeight)
   const std::string path = folder_.file ("unorganized.pcd");
   std::ofstream (path, std::ios::binary) << header << body_;
   pcl::PCLPointCloud2 blob;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
   std::string problem;
-  ASSERT_TRUE (mid::io::readCheckedPCD (path, blob, origin, orientation, problem))
-      << problem;
+  ASSERT_TRUE (readChecked (path, blob, problem)) << problem;
   EXPECT_EQ (blob.width, 12u);
   EXPECT_EQ (blob.height, 1u);
 }
