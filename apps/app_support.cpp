@@ -134,6 +134,9 @@ printResult (const pcl::PointCloud<PointT>& cloud,
   print_value ("%zu", result.triplets);
   print_info ("\nclusters:  ");
   print_value ("%zu", result.clusters);
+  if (result.rejected_clusters > 0)
+    print_info (" (%zu rejected by the photometric verification)",
+                result.rejected_clusters);
   print_info ("\nobjects:   ");
   print_value ("%zu", result.models.size());
   print_info ("\n");

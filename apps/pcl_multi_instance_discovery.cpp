@@ -124,6 +124,12 @@ printHelp (const char* program)
   line ("-leftover_margin M",
         "keypoints this far from every instance's box are left over, metres",
         static_cast<double> (d.leftover_margin));
+  line ("-min_correlation C",
+        "smallest grey-level correlation of a verified cluster, each way",
+        static_cast<double> (d.min_photometric_correlation));
+  line ("-verify_radius R",
+        "verification: surface compared around a keypoint, metres",
+        static_cast<double> (d.verification_radius));
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
@@ -148,6 +154,11 @@ printHelp (const char* program)
   print_info ("  -no_leftovers       no second round on the keypoints outside every "
               "instance\n");
   print_info ("                      (the paper's behaviour)\n");
+  print_info (
+      "  -no_verification    keep every cluster, whatever the look of the surface "
+      "its pose\n");
+  print_info (
+      "                      moves onto the other copy (the paper's behaviour)\n");
   print_info ("Peers (PCL's correspondence grouping instead of triplets + DBSCAN, for "
               "comparison):\n");
   print_info ("  -grouping G         triplets (ours, default), gcg "
@@ -171,6 +182,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_compounds", 0},
                                       {"-no_region_merge", 0},
                                       {"-no_leftovers", 0},
+                                      {"-no_verification", 0},
+                                      {"-min_correlation", 1},
+                                      {"-verify_radius", 1},
                                       {"-leftover_desc_dist", 1},
                                       {"-leftover_margin", 1},
                                       {"-region_margin", 1},
@@ -243,6 +257,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
   p.merge_through_regions = !pcl::console::find_switch (argc, argv, "-no_region_merge");
   p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
+  p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -270,6 +285,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-leftover_desc_dist", p.leftover_descriptor_distance) &&
       parseNumber (argc, argv, "-leftover_margin", p.leftover_margin) &&
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
+      parseNumber (argc, argv, "-min_correlation", p.min_photometric_correlation) &&
+      parseNumber (argc, argv, "-verify_radius", p.verification_radius) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

@@ -100,6 +100,19 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "min_cluster_size",
              static_cast<double> (p.min_cluster_size),
              ">= 1");
+  c.require (p.verification_radius > 0.0f,
+             "verification_radius",
+             static_cast<double> (p.verification_radius),
+             "> 0");
+  c.require (p.verification_depth_tolerance > 0.0f,
+             "verification_depth_tolerance",
+             static_cast<double> (p.verification_depth_tolerance),
+             "> 0");
+  c.require (p.min_photometric_correlation >= -1.0f &&
+                 p.min_photometric_correlation <= 1.0f,
+             "min_photometric_correlation",
+             static_cast<double> (p.min_photometric_correlation),
+             "in [-1, 1]");
   c.require (p.gc_size > 0.0, "gc_size", p.gc_size, "> 0");
   c.require (p.gc_threshold >= 3, "gc_threshold", p.gc_threshold, ">= 3");
   c.require (p.hough_bin_size > 0.0, "hough_bin_size", p.hough_bin_size, "> 0");

@@ -10,14 +10,17 @@
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
 #include <mid/registration/region_model_merger.h>
+#include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 
+#include <pcl/common/io.h>
 #include <pcl/common/time.h>
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -185,6 +188,33 @@ groupWithTriplets (const DiscoveryParameters& p,
   return true;
 }
 
+/** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
+  * the frame and its grey levels are known.
+  */
+bool
+verifyClusters (const DiscoveryParameters& p,
+                const KeypointSurface& surface,
+                DiscoveryResult& result,
+                TripletClusters& clusters)
+{
+  pcl::StopWatch watch;
+  if (p.verify_clusters && surface.organized && surface.intensity &&
+      !clusters.empty()) {
+    PhotometricVerification verification;
+    verification.setKeypointSurface (surface);
+    verification.setRadius (p.verification_radius);
+    verification.setDepthTolerance (p.verification_depth_tolerance);
+    verification.setMinCorrelation (p.min_photometric_correlation);
+    TripletClusters verified;
+    if (!verification.filter (clusters, verified))
+      return false;
+    result.rejected_clusters = clusters.size() - verified.size();
+    clusters.swap (verified);
+  }
+  result.timing_ms.emplace_back ("verification", watch.getTime());
+  return true;
+}
+
 } // namespace
 
 bool
@@ -240,7 +270,7 @@ bool
 runStages (const DiscoveryParameters& p,
            DiscoveryResult& result,
            const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized);
+           const KeypointSurface& frame);
 
 /** Marks the keypoints an instance observes, and those within `margin` of the box of its
   * model's landmarks placed by its pose (all of them where boxes overlap).
@@ -301,7 +331,7 @@ selectLeftovers (const DiscoveryParameters& p,
 bool
 discoverLeftovers (const DiscoveryParameters& p,
                    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-                   const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized,
+                   const KeypointSurface& frame,
                    DiscoveryResult& result)
 {
   DiscoveryResult leftovers;
@@ -310,7 +340,7 @@ discoverLeftovers (const DiscoveryParameters& p,
   DiscoveryParameters second = p;
   second.discover_leftovers = false;
   second.max_descriptor_distance = p.leftover_descriptor_distance;
-  if (!runStages (second, leftovers, surface, organized))
+  if (!runStages (second, leftovers, surface, frame))
     return false;
   if (leftovers.models.empty())
     return true;
@@ -329,12 +359,33 @@ discoverLeftovers (const DiscoveryParameters& p,
   return true;
 }
 
+/** The points and grey levels of an organized colour frame (no keypoints yet); empty for
+  * none.
+  */
+KeypointSurface
+frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
+{
+  KeypointSurface frame;
+  if (!organized)
+    return frame;
+  auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (*organized, *points);
+  auto grey = std::make_shared<std::vector<float>> (organized->size());
+  for (std::size_t i = 0; i < organized->size(); ++i) {
+    const pcl::PointXYZRGB& p = (*organized)[i];
+    (*grey)[i] = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
+  }
+  frame.organized = points;
+  frame.intensity = grey;
+  return frame;
+}
+
 /** discoverFromKeypoints() without its cleanup on failure. */
 bool
 runStages (const DiscoveryParameters& p,
            DiscoveryResult& result,
            const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
+           const KeypointSurface& frame)
 {
   if (!result.keypoints || !result.descriptors) {
     PCL_ERROR ("[mid::discoverFromKeypoints] Keypoints and descriptors must be set.\n");
@@ -346,8 +397,9 @@ runStages (const DiscoveryParameters& p,
                problem.c_str());
     return false;
   }
-  KeypointSurface keypoint_surface{organized, {}};
-  if (organized) {
+  KeypointSurface keypoint_surface = frame;
+  keypoint_surface.keypoint_pixels.clear();
+  if (const auto& organized = frame.organized) {
     for (const auto& k : result.image_keypoints)
       keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
     if (!isValidKeypointSurface (keypoint_surface, result.keypoints->size())) {
@@ -388,6 +440,8 @@ runStages (const DiscoveryParameters& p,
     result.clusters = clusters->size();
     result.timing_ms.emplace_back ("clustering", watch.getTime());
   }
+  if (!verifyClusters (p, keypoint_surface, result, *clusters))
+    return false;
 
   watch.reset();
   MultiInstanceModelBuilder builder;
@@ -415,7 +469,7 @@ runStages (const DiscoveryParameters& p,
   result.timing_ms.emplace_back ("detection", watch.getTime());
 
   watch.reset();
-  if (p.discover_leftovers && !discoverLeftovers (p, surface, organized, result))
+  if (p.discover_leftovers && !discoverLeftovers (p, surface, frame, result))
     return false;
   result.timing_ms.emplace_back ("leftovers", watch.getTime());
   return true;
@@ -427,14 +481,14 @@ bool
 discoverFromKeypoints (const DiscoveryParameters& p,
                        DiscoveryResult& result,
                        const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-                       const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized)
+                       const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (p, result, surface, organized))
+  if (runStages (p, result, surface, frameSurface (organized)))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();
-  result.triplets = result.clusters = 0;
+  result.triplets = result.clusters = result.rejected_clusters = 0;
   result.models.clear();
   result.timing_ms.resize (timed);
   return false;

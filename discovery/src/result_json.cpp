@@ -86,6 +86,7 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
       << (result.keypoints ? result.keypoints->size() : 0)
       << ", \"matches\": " << result.matches.size()
       << ", \"triplets\": " << result.triplets << ", \"clusters\": " << result.clusters
+      << ", \"rejected_clusters\": " << result.rejected_clusters
       << ", \"objects\": " << result.models.size() << ", \"instances\": " << instances
       << "},\n  \"objects\": [";
   for (std::size_t m = 0; m < result.models.size(); ++m) {

@@ -224,7 +224,7 @@ TEST (MultiInstanceDiscovery, FindsTwoCopiesHeadToTailOnATable)
 
   // Given the frame too, the keypoint route finds both; given a frame the keypoints were not
   // found in, it refuses rather than silently leaving the surface out.
-  auto frame = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  auto frame = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>>();
   pcl::copyPointCloud (*scene.cloud, *frame);
   mid::DiscoveryResult with_frame = keypoints_only;
   with_frame.timing_ms.clear();
@@ -232,7 +232,7 @@ TEST (MultiInstanceDiscovery, FindsTwoCopiesHeadToTailOnATable)
       mid::DiscoveryParameters(), with_frame, nullptr, frame));
   ASSERT_EQ (with_frame.models.size(), 1u);
   EXPECT_EQ (with_frame.models.front().instances.size(), 2u);
-  const auto small = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (32, 24);
+  const auto small = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> (32, 24);
   const std::size_t timed = with_frame.timing_ms.size();
   EXPECT_FALSE (mid::discoverFromKeypoints (
       mid::DiscoveryParameters(), with_frame, nullptr, small));

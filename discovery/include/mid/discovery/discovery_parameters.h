@@ -92,6 +92,20 @@ struct DiscoveryParameters
     */
   bool split_compounds = true;
 
+  // --- Verification (PhotometricVerification; every grouping) ---
+  /** \brief Keep only the clusters whose pose carries the look of the surface around one point
+    * set onto the other (not in the paper: chance matches on shiny parts can agree on a pose
+    * that moves one part onto another; see PhotometricVerification). Needs the frame's colour;
+    * without it (discoverFromKeypoints() given no organized frame) nothing is checked.
+    */
+  bool verify_clusters = true;
+  /** \brief How far around a keypoint the surface is compared (metres, > 0). */
+  float verification_radius = 0.015f;
+  /** \brief How far the frame's surface may lie from a moved point (metres, > 0). */
+  float verification_depth_tolerance = 0.01f;
+  /** \brief The smallest grey-level correlation of a kept cluster, each way (in [-1, 1]). */
+  float min_photometric_correlation = 0.4f;
+
   // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
   /** \brief The grouping method. */
   Grouping grouping = Grouping::triplets;

@@ -30,10 +30,14 @@ struct DiscoveryResult
   std::size_t triplets = 0;
   std::size_t clusters = 0;
   ///@}
+  /** \brief How many of the clusters the photometric verification rejected (not in the
+    * paper; DiscoveryParameters::verify_clusters). The model builder gets the others.
+    */
+  std::size_t rejected_clusters = 0;
   /** \brief The discovered objects, each with its instances (poses, keypoints). */
   ObjectModels models;
   /** \brief Milliseconds per stage, in pipeline order: features, matching, triplets,
-    * clustering, modeling, detection; then total.
+    * clustering, verification, modeling, detection, leftovers; then total.
     */
   std::vector<std::pair<std::string, double>> timing_ms;
 };

@@ -13,10 +13,11 @@ namespace mid {
   * \param[in] parameters the parameters
   * \param[in,out] result keypoints and descriptors in; matches, counts, models and times out
   * \param[in] surface the frame's points with normals; needed by Grouping::hough3d only
-  * \param[in] organized the organized frame the keypoints were found in, with
+  * \param[in] organized the organized colour frame the keypoints were found in, with
   * result.image_keypoints giving their pixels (ImageKeypoint::pixel_index); optional: it lets
   * the clustering orient a half turn between two copies lying apart that no third copy
-  * anchors (TransformationSpaceClustering::setKeypointSurface())
+  * anchors (TransformationSpaceClustering::setKeypointSurface()), and the photometric
+  * verification check every cluster (DiscoveryParameters::verify_clusters)
   * \return false (with a PCL_ERROR) if a stage refuses its input or parameters, or if
   * `organized` is given but result.image_keypoints do not give a pixel inside it for every
   * keypoint; then result's matches, counts and models are empty and timing_ms is as it came
@@ -27,7 +28,7 @@ discoverFromKeypoints (
     const DiscoveryParameters& parameters,
     DiscoveryResult& result,
     const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface = nullptr,
-    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& organized = nullptr);
+    const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized = nullptr);
 
 /** \brief The pipeline's model merging (DiscoveryParameters::merge_models): every model j is
   * searched, by descriptor matching and RANSAC (ModelInstanceDetector), among the landmarks of

@@ -4,6 +4,9 @@
 #include <pcl/point_types.h>
 #include <pcl/types.h>
 
+#include <memory>
+#include <vector>
+
 namespace mid {
 
 /** \brief The frame's organized points and the pixel each keypoint was found at: what a
@@ -17,6 +20,11 @@ struct KeypointSurface
     * column).
     */
   pcl::Indices keypoint_pixels;
+  /** \brief The grey level of each pixel of `organized` (any scale, e.g. 0 to 255), or null
+    * when the frame has no colour; only the photometric verification of clusters reads it
+    * (PhotometricVerification).
+    */
+  std::shared_ptr<const std::vector<float>> intensity = nullptr;
 };
 
 /** \brief True if `surface` is organized and gives a pixel inside it for each of

@@ -56,13 +56,10 @@ MultiInstanceDiscovery<PointT>::discover (DiscoveryResult& result)
       }
     result.timing_ms.emplace_back ("surface_normals", watch.getTime());
   }
-  // The organized points let our clustering see the surface between two copies (the peers
-  // do not look at it).
-  pcl::PointCloud<pcl::PointXYZ>::Ptr organized;
-  if (parameters_.grouping == Grouping::triplets) {
-    organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-    pcl::copyPointCloud (*input_, *organized);
-  }
+  // The organized frame lets our clustering see the surface between two copies (the peers
+  // do not look at it) and the verification compare the look of the copies (every grouping).
+  auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>>();
+  pcl::copyPointCloud (*input_, *organized);
   if (!discoverFromKeypoints (parameters_, result, surface, organized)) {
     result = DiscoveryResult();
     return false;

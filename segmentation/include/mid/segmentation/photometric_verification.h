@@ -1,0 +1,134 @@
+#pragma once
+
+#include <mid/registration/triplet_cluster.h>
+#include <mid/segmentation/frame_pinhole.h>
+#include <mid/segmentation/surface_gap.h>
+
+#include <cstddef>
+
+namespace mid {
+
+/** \brief Keeps the clusters whose pose carries the look of the surface around one point set
+  * onto the other (not in the paper).
+  *
+  * A cluster says that its point set P, moved by its transform, lies on another copy of the
+  * object as set Q. Triplets check the geometry of a few keypoints only; on shiny or periodic
+  * surfaces (a bin of metal pins beside a bin of pulleys) chance matches can agree on a pose
+  * that moves a pin onto a pulley. This check looks at the surface between the keypoints:
+  * around each keypoint of P, the frame's points within the radius are moved by the cluster's
+  * transform and projected into the frame; where the frame shows a surface at the moved
+  * point's depth (within the depth tolerance: neither occluded nor missing), the grey level at
+  * the point's own pixel and at its new pixel form a pair. The normalized cross-correlation of
+  * those pairs is near 1 for two copies of one object (same print, same light, whatever the
+  * gain) and near 0 for unrelated surfaces. The same is done from Q back to P, and a cluster is
+  * kept when both correlations reach the minimum, or when fewer pairs than the minimum count
+  * were found (then the frame cannot tell, e.g. everything moved is occluded).
+  *
+  * The camera need not be given: the projection is fitted to the organized frame
+  * (fitFramePinhole()).
+  */
+class PhotometricVerification
+{
+public:
+  /** \brief The frame, its grey levels (KeypointSurface::intensity) and the pixel of each
+    * keypoint the clusters refer to. Fits the frame's projection (fitFramePinhole()) once.
+    */
+  ///@{
+  void
+  setKeypointSurface (const KeypointSurface& surface);
+  const KeypointSurface&
+  getKeypointSurface () const
+  {
+    return surface_;
+  }
+  ///@}
+
+  /** \brief How far around a keypoint the surface is compared (metres; default 0.015). */
+  ///@{
+  void
+  setRadius (float radius)
+  {
+    radius_ = radius;
+  }
+  float
+  getRadius () const
+  {
+    return radius_;
+  }
+  ///@}
+
+  /** \brief How far (metres, along the view) the frame's surface may lie from a moved point
+    * for the pair to count (default 0.01: Kinect-class noise at 1 m).
+    */
+  ///@{
+  void
+  setDepthTolerance (float tolerance)
+  {
+    depth_tolerance_ = tolerance;
+  }
+  float
+  getDepthTolerance () const
+  {
+    return depth_tolerance_;
+  }
+  ///@}
+
+  /** \brief The smallest correlation of a kept cluster, each way (default 0.4). */
+  ///@{
+  void
+  setMinCorrelation (float correlation)
+  {
+    min_correlation_ = correlation;
+  }
+  float
+  getMinCorrelation () const
+  {
+    return min_correlation_;
+  }
+  ///@}
+
+  /** \brief Fewer pairs than this, either way, keep the cluster untested (default 30). */
+  ///@{
+  void
+  setMinPairs (std::size_t pairs)
+  {
+    min_pairs_ = pairs;
+  }
+  std::size_t
+  getMinPairs () const
+  {
+    return min_pairs_;
+  }
+  ///@}
+
+  /** \brief Keep the clusters the frame's look confirms.
+    * \param[in] clusters the clusters (their source and target keypoints index the keypoint
+    * surface's keypoint pixels)
+    * \param[out] verified the kept clusters, in their input order (cleared on failure)
+    * \return false (with a PCL_ERROR) if the keypoint surface is not valid for the clusters'
+    * keypoints (isValidKeypointSurface()), has no grey level per pixel, if no pinhole camera
+    * fits the frame, or a parameter is out of range (radius and tolerance > 0, correlation in
+    * [-1, 1])
+    */
+  bool
+  filter (const TripletClusters& clusters, TripletClusters& verified) const;
+
+  /** \brief The smaller of a cluster's two correlations (P onto Q and back), and whether both
+    * directions had the minimum number of pairs. For reports and tests; filter() decides with
+    * it. Same preconditions as filter(), not checked (returns 0, untested, without a fitted
+    * projection).
+    */
+  double
+  correlation (const TripletCluster& cluster, bool& tested) const;
+
+private:
+  KeypointSurface surface_;
+  FramePinhole pinhole_;
+  bool has_pinhole_ = false;
+  float radius_ = 0.015f;
+  float depth_tolerance_ = 0.01f;
+  float min_correlation_ = 0.4f;
+  std::size_t min_pairs_ = 30;
+};
+
+} // namespace mid

@@ -1,0 +1,245 @@
+#include "rendered_objects_scene.h"
+
+#include <mid/segmentation/frame_pinhole.h>
+#include <mid/segmentation/photometric_verification.h>
+
+#include <gtest/gtest.h>
+#include <pcl/common/io.h>
+#include <pcl/common/point_tests.h>
+
+#include <random>
+
+namespace {
+
+using mid::test::boxPose;
+using mid::test::BoxSpec;
+
+const char* const kApple = "tropicana_apple_juice_front.jpg";
+const char* const kSoy = "alpro_soya_front.jpg";
+
+/** Three boxes of one size in front of a table: copies 0 and 1 of one print, box 2 of another
+  * print, each turned its own way.
+  */
+mid::test::RenderedObjectsScene
+threeBoxes ()
+{
+  return mid::test::renderBoxes (
+      {{kApple, {0.12, 0.09, 0.04}, boxPose (-0.12, -0.06, 0.8, 15.0)},
+       {kApple, {0.12, 0.09, 0.04}, boxPose (0.1, -0.05, 0.85, 200.0, 20.0)},
+       {kSoy, {0.12, 0.09, 0.04}, boxPose (0.0, 0.1, 0.82, -40.0)}},
+      0.95);
+}
+
+/** The frame as XYZ points. */
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+pointsOf (const mid::test::RenderedObjectsScene& scene)
+{
+  auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (*scene.cloud, *points);
+  return points;
+}
+
+/** The pixel of a camera-frame point in the scene's camera. */
+pcl::index_t
+pixelOf (const mid::test::RenderedObjectsScene& scene, const Eigen::Vector3d& point)
+{
+  const auto& camera = scene.frame.camera;
+  const auto u = static_cast<int> (
+                 std::lround (camera.fx * point.x() / point.z() + camera.cx)),
+             v = static_cast<int> (
+                 std::lround (camera.fy * point.y() / point.z() + camera.cy));
+  return v * camera.width + u;
+}
+
+/** The printed face's keypoints: a 4 x 3 grid of points of the box model, seen on each box in
+  * turn (keypoint 12 b + i is grid point i on box b); and the cluster from box `from` to box
+  * `to` that the boxes' poses give.
+  */
+struct PrintedFaces
+{
+  mid::KeypointSurface surface;
+  std::vector<Eigen::Isometry3d> poses;
+
+  explicit PrintedFaces (const mid::test::RenderedObjectsScene& scene)
+  {
+    surface.organized = pointsOf (scene);
+    auto grey = std::make_shared<std::vector<float>> (scene.cloud->size());
+    for (std::size_t i = 0; i < grey->size(); ++i) {
+      const auto& p = (*scene.cloud)[i];
+      (*grey)[i] = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
+    }
+    surface.intensity = grey;
+    for (const auto& box : scene.boxes) {
+      poses.push_back (box.pose);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j)
+          surface.keypoint_pixels.push_back (pixelOf (
+              scene,
+              box.pose * Eigen::Vector3d (-0.045 + 0.03 * i, -0.03 + 0.03 * j, -0.02)));
+    }
+  }
+
+  mid::TripletCluster
+  cluster (int from, int to) const
+  {
+    mid::TripletCluster c;
+    for (int i = 0; i < 12; ++i) {
+      c.source_indices.push_back (12 * from + i);
+      c.target_indices.push_back (12 * to + i);
+      c.correspondences.emplace_back (12 * from + i, 12 * to + i, 0.0f);
+    }
+    c.transformation = (poses[static_cast<std::size_t> (to)] *
+                        poses[static_cast<std::size_t> (from)].inverse())
+                           .matrix()
+                           .cast<float>();
+    return c;
+  }
+};
+
+} // namespace
+
+TEST (FramePinhole, RecoversTheCameraOfAnOrganizedFrame)
+{
+  const auto scene = threeBoxes();
+  const auto points = pointsOf (scene);
+  mid::FramePinhole pinhole;
+  ASSERT_TRUE (mid::fitFramePinhole (*points, pinhole));
+  const auto& camera = scene.frame.camera;
+  EXPECT_NEAR (pinhole.fx, camera.fx, 1e-3 * camera.fx);
+  EXPECT_NEAR (pinhole.fy, camera.fy, 1e-3 * camera.fy);
+  EXPECT_NEAR (pinhole.cx, camera.cx, 0.05);
+  EXPECT_NEAR (pinhole.cy, camera.cy, 0.05);
+
+  // Turned by a half turn about x (z < 0, as PCL's milk scene): every point still projects
+  // onto its own pixel.
+  auto turned = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*points);
+  for (auto& p : *turned) {
+    p.y = -p.y;
+    p.z = -p.z;
+  }
+  ASSERT_TRUE (mid::fitFramePinhole (*turned, pinhole));
+  EXPECT_LT (pinhole.fx, 0.0);
+  std::size_t checked = 0;
+  for (int v = 0; v < camera.height; v += 7)
+    for (int u = 0; u < camera.width; u += 7) {
+      const auto& p =
+          (*turned) (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
+      if (!pcl::isXYZFinite (p))
+        continue;
+      int pu = -1, pv = -1;
+      ASSERT_TRUE (
+          pinhole.project (p.getVector3fMap(), camera.width, camera.height, pu, pv));
+      EXPECT_EQ (pu, u);
+      EXPECT_EQ (pv, v);
+      ++checked;
+    }
+  EXPECT_GT (checked, 1000u);
+}
+
+TEST (FramePinhole, RefusesFramesNoPinholeCameraMade)
+{
+  const auto points = pointsOf (threeBoxes());
+  mid::FramePinhole pinhole;
+  // The same points, shuffled over the pixels.
+  auto shuffled = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*points);
+  std::mt19937 random (7);
+  std::shuffle (shuffled->begin(), shuffled->end(), random);
+  EXPECT_FALSE (mid::fitFramePinhole (*shuffled, pinhole));
+  EXPECT_EQ (pinhole.fx, 0.0);
+  // Not organized.
+  pcl::PointCloud<pcl::PointXYZ> unorganized (*points);
+  unorganized.height = 1;
+  unorganized.width = static_cast<std::uint32_t> (unorganized.size());
+  EXPECT_FALSE (mid::fitFramePinhole (unorganized, pinhole));
+  // No valid point.
+  pcl::PointCloud<pcl::PointXYZ> empty (640, 480, pcl::PointXYZ (NAN, NAN, NAN));
+  EXPECT_FALSE (mid::fitFramePinhole (empty, pinhole));
+}
+
+TEST (PhotometricVerification, KeepsTheTruePoseAndRejectsAPoseOntoAnotherPrint)
+{
+  const auto scene = threeBoxes();
+  const PrintedFaces faces (scene);
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (faces.surface);
+
+  // Copies 0 and 1: the same print under their true relative pose. Box 2 has the same shape,
+  // so the pose onto it is as consistent geometrically, but its print differs.
+  const mid::TripletCluster copies = faces.cluster (0, 1), other = faces.cluster (0, 2);
+  bool tested = false;
+  EXPECT_GT (verification.correlation (copies, tested), 0.8);
+  EXPECT_TRUE (tested);
+  EXPECT_LT (verification.correlation (other, tested), 0.4);
+  EXPECT_TRUE (tested);
+
+  mid::TripletClusters verified;
+  ASSERT_TRUE (verification.filter ({other, copies, faces.cluster (2, 0)}, verified));
+  ASSERT_EQ (verified.size(), 1u);
+  EXPECT_EQ (verified.front().target_indices, copies.target_indices);
+
+  // Without a minimum, every cluster stays.
+  verification.setMinCorrelation (-1.0f);
+  ASSERT_TRUE (verification.filter ({other, copies}, verified));
+  EXPECT_EQ (verified.size(), 2u);
+}
+
+TEST (PhotometricVerification, KeepsAClusterTheFrameCannotTell)
+{
+  // No table: the pose from box 0 onto a box moved far out of the view lands on no surface,
+  // so no grey level can be compared and the cluster is kept untested.
+  const auto scene = mid::test::renderBoxes (
+      {{kApple, {0.12, 0.09, 0.04}, boxPose (-0.05, 0.0, 0.8, 15.0)}});
+  const PrintedFaces faces (scene);
+  mid::TripletCluster away;
+  away.source_indices = away.target_indices = {0, 1, 2, 3};
+  away.transformation = Eigen::Matrix4f::Identity();
+  away.transformation (0, 3) = 2.0f;
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (faces.surface);
+  bool tested = true;
+  verification.correlation (away, tested);
+  EXPECT_FALSE (tested);
+  mid::TripletClusters verified;
+  ASSERT_TRUE (verification.filter ({away}, verified));
+  EXPECT_EQ (verified.size(), 1u);
+}
+
+TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
+{
+  const auto scene = threeBoxes();
+  const PrintedFaces faces (scene);
+  const mid::TripletClusters clusters{faces.cluster (0, 1)};
+  const mid::TripletClusters stale{faces.cluster (0, 2)};
+  const auto refuses = [&clusters, &stale] (const mid::KeypointSurface& surface,
+                                            float radius = 0.015f,
+                                            float correlation = 0.4f) {
+    mid::PhotometricVerification verification;
+    verification.setKeypointSurface (surface);
+    verification.setRadius (radius);
+    verification.setMinCorrelation (correlation);
+    mid::TripletClusters verified = stale;
+    return !verification.filter (clusters, verified) && verified.empty();
+  };
+  mid::KeypointSurface no_grey = faces.surface;
+  no_grey.intensity = nullptr;
+  EXPECT_TRUE (refuses (no_grey));
+  mid::KeypointSurface short_grey = faces.surface;
+  short_grey.intensity = std::make_shared<std::vector<float>> (100, 0.0f);
+  EXPECT_TRUE (refuses (short_grey));
+  mid::KeypointSurface few_pixels = faces.surface;
+  few_pixels.keypoint_pixels.resize (12); // the clusters' box-1 keypoints have no pixel
+  EXPECT_TRUE (refuses (few_pixels));
+  mid::KeypointSurface no_frame = faces.surface;
+  no_frame.organized = nullptr;
+  EXPECT_TRUE (refuses (no_frame));
+  mid::KeypointSurface shuffled = faces.surface;
+  auto points =
+      pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*faces.surface.organized);
+  std::mt19937 random (3);
+  std::shuffle (points->begin(), points->end(), random);
+  shuffled.organized = points;
+  EXPECT_TRUE (refuses (shuffled));
+  EXPECT_TRUE (refuses (faces.surface, 0.0f));
+  EXPECT_TRUE (refuses (faces.surface, 0.015f, 1.5f));
+  EXPECT_FALSE (refuses (faces.surface));
+}
