@@ -370,13 +370,9 @@ frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
     return frame;
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
-  auto grey = std::make_shared<std::vector<float>> (organized->size());
-  for (std::size_t i = 0; i < organized->size(); ++i) {
-    const pcl::PointXYZRGB& p = (*organized)[i];
-    (*grey)[i] = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
-  }
   frame.organized = points;
-  frame.intensity = grey;
+  frame.intensity =
+      std::make_shared<const std::vector<float>> (greyLevels (*organized));
   return frame;
 }
 

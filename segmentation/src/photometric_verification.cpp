@@ -71,7 +71,8 @@ movedSurfacePairs (const KeypointSurface& surface,
          v += step)
       for (int u = std::max (0, u0 - reach); u <= std::min (width - 1, u0 + reach);
            u += step) {
-        const auto own = static_cast<std::size_t> (v * width + u);
+        const std::size_t own =
+            static_cast<std::size_t> (v) * cloud.width + static_cast<std::size_t> (u);
         const Eigen::Vector3f point = cloud[own].getVector3fMap();
         if (!point.allFinite() || (point - centre).norm() > radius)
           continue;
@@ -79,7 +80,8 @@ movedSurfacePairs (const KeypointSurface& surface,
         int mu = 0, mv = 0;
         if (!pinhole.project (moved, width, height, mu, mv))
           continue;
-        const auto there = static_cast<std::size_t> (mv * width + mu);
+        const std::size_t there =
+            static_cast<std::size_t> (mv) * cloud.width + static_cast<std::size_t> (mu);
         const pcl::PointXYZ& seen = cloud[there];
         // Depths along the view: the frame may look down -z (a half turn about x).
         if (pcl::isXYZFinite (seen) &&
@@ -105,6 +107,18 @@ keypointsHavePixels (const TripletClusters& clusters, std::size_t keypoints)
 }
 
 } // namespace
+
+std::vector<float>
+greyLevels (const pcl::PointCloud<pcl::PointXYZRGB>& frame)
+{
+  std::vector<float> grey;
+  grey.reserve (frame.size());
+  for (const auto& p : frame)
+    grey.push_back (0.299f * static_cast<float> (p.r) +
+                    0.587f * static_cast<float> (p.g) +
+                    0.114f * static_cast<float> (p.b));
+  return grey;
+}
 
 void
 PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)

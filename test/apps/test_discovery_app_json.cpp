@@ -68,10 +68,13 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
   EXPECT_NE (json.find ("\"format\": \"mid-discovery-result\""), std::string::npos);
   EXPECT_NE (json.find ("\"version\": 1"), std::string::npos);
   EXPECT_NE (json.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << json;
+  // Two copies of one print: the verification confirms the cluster between them.
+  EXPECT_NE (json.find ("\"rejected_clusters\": 0,"), std::string::npos) << json;
   for (const char* stage : {"features",
                             "matching",
                             "triplets",
                             "clustering",
+                            "verification",
                             "modeling",
                             "detection",
                             "leftovers",

@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 #include <pcl/common/io.h>
 
+#include <algorithm>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -95,6 +98,41 @@ TEST (MultiInstanceDiscovery, FindsThreeCopiesOfOneObjectWithTheirRelativePoses)
     EXPECT_LT (instance.rms_error, 0.003f);
   EXPECT_GT (model.landmarks.size(), 20u);
   EXPECT_LT (model.diameter, 0.21f); // the box's diagonal is 0.20 m
+}
+
+TEST (MultiInstanceDiscovery, VerifiesEveryClusterByTheLookOfTheSurface)
+{
+  const auto scene = mid::test::renderBoxes ({
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.13, -0.02, 0.85, 10.0, 15.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.12, 0.02, 0.85, 70.0, -10.0)},
+  });
+  // Two copies of one print: every cluster is confirmed.
+  const auto confirmed = discover (scene);
+  ASSERT_GT (confirmed.clusters, 0u);
+  EXPECT_EQ (confirmed.rejected_clusters, 0u);
+  ASSERT_EQ (confirmed.models.size(), 1u);
+  EXPECT_EQ (confirmed.models.front().instances.size(), 2u);
+  // Timed between the clustering and the model building.
+  std::vector<std::string> stages;
+  for (const auto& stage : confirmed.timing_ms)
+    stages.push_back (stage.first);
+  const auto clustering = std::find (stages.begin(), stages.end(), "clustering");
+  ASSERT_GE (stages.end() - clustering, 3);
+  EXPECT_EQ (*(clustering + 1), "verification");
+  EXPECT_EQ (*(clustering + 2), "modeling");
+
+  // No correlation reaches 1: the same frame with that minimum keeps no cluster.
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters strict;
+  strict.min_photometric_correlation = 1.0f;
+  strict.discover_leftovers = false;
+  discovery.setParameters (strict);
+  mid::DiscoveryResult rejected;
+  ASSERT_TRUE (discovery.discover (rejected));
+  EXPECT_EQ (rejected.rejected_clusters, rejected.clusters);
+  EXPECT_EQ (rejected.clusters, confirmed.clusters);
+  EXPECT_TRUE (rejected.models.empty());
 }
 
 TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)

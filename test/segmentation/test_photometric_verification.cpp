@@ -63,12 +63,10 @@ struct PrintedFaces
   explicit PrintedFaces (const mid::test::RenderedObjectsScene& scene)
   {
     surface.organized = pointsOf (scene);
-    auto grey = std::make_shared<std::vector<float>> (scene.cloud->size());
-    for (std::size_t i = 0; i < grey->size(); ++i) {
-      const auto& p = (*scene.cloud)[i];
-      (*grey)[i] = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
-    }
-    surface.intensity = grey;
+    pcl::PointCloud<pcl::PointXYZRGB> colour;
+    pcl::copyPointCloud (*scene.cloud, colour);
+    surface.intensity =
+        std::make_shared<const std::vector<float>> (mid::greyLevels (colour));
     for (const auto& box : scene.boxes) {
       poses.push_back (box.pose);
       for (int i = 0; i < 4; ++i)
@@ -181,6 +179,19 @@ TEST (PhotometricVerification, KeepsTheTruePoseAndRejectsAPoseOntoAnotherPrint)
   verification.setMinCorrelation (-1.0f);
   ASSERT_TRUE (verification.filter ({other, copies}, verified));
   EXPECT_EQ (verified.size(), 2u);
+}
+
+TEST (PhotometricVerification, GreyLevelsWeighTheChannelsLikeTheEye)
+{
+  pcl::PointCloud<pcl::PointXYZRGB> frame (3, 1);
+  frame[0].r = 255;
+  frame[1].g = 255;
+  frame[2].r = frame[2].g = frame[2].b = 100;
+  const std::vector<float> grey = mid::greyLevels (frame);
+  ASSERT_EQ (grey.size(), 3u);
+  EXPECT_NEAR (grey[0], 0.299f * 255.0f, 1e-3f);
+  EXPECT_NEAR (grey[1], 0.587f * 255.0f, 1e-3f);
+  EXPECT_NEAR (grey[2], 100.0f, 1e-3f);
 }
 
 TEST (PhotometricVerification, KeepsAClusterTheFrameCannotTell)

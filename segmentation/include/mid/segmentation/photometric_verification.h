@@ -4,7 +4,11 @@
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/surface_gap.h>
 
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
 #include <cstddef>
+#include <vector>
 
 namespace mid {
 
@@ -130,5 +134,11 @@ private:
   float min_correlation_ = 0.4f;
   std::size_t min_pairs_ = 30;
 };
+
+/** \brief The grey level (0.299 R + 0.587 G + 0.114 B, 0 to 255) of each point of a colour
+  * frame, in its order: KeypointSurface::intensity for PhotometricVerification.
+  */
+std::vector<float>
+greyLevels (const pcl::PointCloud<pcl::PointXYZRGB>& frame);
 
 } // namespace mid
