@@ -189,7 +189,7 @@ groupWithTriplets (const DiscoveryParameters& p,
 }
 
 /** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
-  * the frame and its grey levels are known.
+  * the frame and its grey levels are known and a pinhole camera fits the frame.
   */
 bool
 verifyClusters (const DiscoveryParameters& p,
@@ -198,6 +198,7 @@ verifyClusters (const DiscoveryParameters& p,
                 TripletClusters& clusters)
 {
   pcl::StopWatch watch;
+  result.rejected_clusters = 0;
   if (p.verify_clusters && surface.organized && surface.intensity &&
       !clusters.empty()) {
     PhotometricVerification verification;
@@ -206,10 +207,16 @@ verifyClusters (const DiscoveryParameters& p,
     verification.setDepthTolerance (p.verification_depth_tolerance);
     verification.setMinCorrelation (p.min_photometric_correlation);
     TripletClusters verified;
-    if (!verification.filter (clusters, verified))
+    if (!verification.hasProjection())
+      PCL_WARN (
+          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+          "(not in its camera's coordinates?): the clusters are not verified.\n");
+    else if (!verification.filter (clusters, verified))
       return false;
-    result.rejected_clusters = clusters.size() - verified.size();
-    clusters.swap (verified);
+    else {
+      result.rejected_clusters = clusters.size() - verified.size();
+      clusters.swap (verified);
+    }
   }
   result.timing_ms.emplace_back ("verification", watch.getTime());
   return true;
@@ -342,6 +349,7 @@ discoverLeftovers (const DiscoveryParameters& p,
   second.max_descriptor_distance = p.leftover_descriptor_distance;
   if (!runStages (second, leftovers, surface, frame))
     return false;
+  result.rejected_clusters += leftovers.rejected_clusters;
   if (leftovers.models.empty())
     return true;
   const std::size_t first_new = result.models.size();
@@ -359,11 +367,11 @@ discoverLeftovers (const DiscoveryParameters& p,
   return true;
 }
 
-/** The points and grey levels of an organized colour frame (no keypoints yet); empty for
-  * none.
+/** The points of an organized colour frame, and its grey levels if `grey` (no keypoints yet);
+  * empty for none.
   */
 KeypointSurface
-frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
+frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized, bool grey)
 {
   KeypointSurface frame;
   if (!organized)
@@ -371,8 +379,9 @@ frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  frame.intensity =
-      std::make_shared<const std::vector<float>> (greyLevels (*organized));
+  if (grey)
+    frame.intensity =
+        std::make_shared<const std::vector<float>> (greyLevels (*organized));
   return frame;
 }
 
@@ -480,7 +489,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                        const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (p, result, surface, frameSurface (organized)))
+  if (runStages (p, result, surface, frameSurface (organized, p.verify_clusters)))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();

@@ -1,10 +1,12 @@
 #include <mid/segmentation/photometric_verification.h>
 
+#include <Eigen/Geometry>
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace mid {
 
@@ -26,15 +28,24 @@ struct GreyPairs
     sab += a * b;
   }
 
-  /** Normalized cross-correlation; 0 when either side has no contrast. */
+  /** True if both sides vary by more than one grey level (standard deviation): below that, a
+    * uniform surface (or a frame without colour) cannot tell one pose from another.
+    */
+  bool
+  contrasted () const
+  {
+    return n >= 2.0 && saa - sa * sa / n > n && sbb - sb * sb / n > n;
+  }
+
+  /** Normalized cross-correlation; 0 without contrast. */
   double
   correlation () const
   {
-    if (n < 2.0)
+    if (!contrasted())
       return 0.0;
     const double va = saa - sa * sa / n, vb = sbb - sb * sb / n,
                  cab = sab - sa * sb / n;
-    return va > 0.0 && vb > 0.0 ? cab / std::sqrt (va * vb) : 0.0;
+    return cab / std::sqrt (va * vb);
   }
 };
 
@@ -67,10 +78,11 @@ movedSurfacePairs (const KeypointSurface& surface,
         std::min (std::ceil (focal * radius / std::abs (centre.z())), 1000.0));
     const int step = std::max (1, reach / 4);
     const int u0 = pixel % width, v0 = pixel / width;
-    for (int v = std::max (0, v0 - reach); v <= std::min (height - 1, v0 + reach);
-         v += step)
-      for (int u = std::max (0, u0 - reach); u <= std::min (width - 1, u0 + reach);
-           u += step) {
+    for (int dv = -reach; dv <= reach; dv += step)
+      for (int du = -reach; du <= reach; du += step) {
+        const int u = u0 + du, v = v0 + dv;
+        if (u < 0 || v < 0 || u >= width || v >= height)
+          continue;
         const std::size_t own =
             static_cast<std::size_t> (v) * cloud.width + static_cast<std::size_t> (u);
         const Eigen::Vector3f point = cloud[own].getVector3fMap();
@@ -83,27 +95,26 @@ movedSurfacePairs (const KeypointSurface& surface,
         const std::size_t there =
             static_cast<std::size_t> (mv) * cloud.width + static_cast<std::size_t> (mu);
         const pcl::PointXYZ& seen = cloud[there];
-        // Depths along the view: the frame may look down -z (a half turn about x).
-        if (pcl::isXYZFinite (seen) &&
-            std::abs (std::abs (seen.z) - std::abs (moved.z())) <= tolerance)
+        // The same z on the pixel's ray: the same side of the camera, also in a frame that
+        // looks down -z.
+        if (pcl::isXYZFinite (seen) && std::abs (seen.z - moved.z()) <= tolerance)
           pairs.add (grey[own], grey[there]);
       }
   }
   return pairs;
 }
 
-/** True if every keypoint of the clusters' point sets is below `keypoints`. */
+/** True if every keypoint of the cluster's point sets is below `keypoints`. */
 bool
-keypointsHavePixels (const TripletClusters& clusters, std::size_t keypoints)
+keypointsHavePixels (const TripletCluster& cluster, std::size_t keypoints)
 {
   const auto inside = [keypoints] (pcl::index_t k) {
     return k >= 0 && static_cast<std::size_t> (k) < keypoints;
   };
   return std::all_of (
-      clusters.begin(), clusters.end(), [&inside] (const TripletCluster& c) {
-        return std::all_of (c.source_indices.begin(), c.source_indices.end(), inside) &&
-               std::all_of (c.target_indices.begin(), c.target_indices.end(), inside);
-      });
+             cluster.source_indices.begin(), cluster.source_indices.end(), inside) &&
+         std::all_of (
+             cluster.target_indices.begin(), cluster.target_indices.end(), inside);
 }
 
 } // namespace
@@ -127,11 +138,35 @@ PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)
   has_pinhole_ = surface_.organized && fitFramePinhole (*surface_.organized, pinhole_);
 }
 
+std::string
+PhotometricVerification::inputProblem() const
+{
+  if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
+      !(min_correlation_ <= 1.0f))
+    return "the radius (" + std::to_string (radius_) + ") and depth tolerance (" +
+           std::to_string (depth_tolerance_) +
+           ") must be positive and the minimum correlation (" +
+           std::to_string (min_correlation_) + ") in [-1, 1]";
+  if (!isValidKeypointSurface (surface_, surface_.keypoint_pixels.size()))
+    return "the keypoint surface must be an organized frame with every keypoint's "
+           "pixel "
+           "inside it";
+  if (!surface_.intensity || surface_.intensity->size() != surface_.organized->size())
+    return "the keypoint surface needs one grey level per pixel (" +
+           std::to_string (surface_.intensity ? surface_.intensity->size() : 0) +
+           " given for " + std::to_string (surface_.organized->size()) + " pixels)";
+  if (!has_pinhole_)
+    return "no pinhole camera fits the organized frame (its points do not project onto "
+           "their pixels)";
+  return {};
+}
+
 double
 PhotometricVerification::correlation (const TripletCluster& cluster, bool& tested) const
 {
   tested = false;
-  if (!has_pinhole_)
+  if (!inputProblem().empty() ||
+      !keypointsHavePixels (cluster, surface_.keypoint_pixels.size()))
     return 0.0;
   const GreyPairs forward = movedSurfacePairs (surface_,
                                                pinhole_,
@@ -146,7 +181,8 @@ PhotometricVerification::correlation (const TripletCluster& cluster, bool& teste
                                                 radius_,
                                                 depth_tolerance_);
   const auto enough = static_cast<double> (min_pairs_);
-  tested = forward.n >= enough && backward.n >= enough;
+  tested = forward.n >= enough && backward.n >= enough && forward.contrasted() &&
+           backward.contrasted();
   return std::min (forward.correlation(), backward.correlation());
 }
 
@@ -155,35 +191,14 @@ PhotometricVerification::filter (const TripletClusters& clusters,
                                  TripletClusters& verified) const
 {
   verified.clear();
-  if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
-      !(min_correlation_ <= 1.0f)) {
-    PCL_ERROR (
-        "[mid::PhotometricVerification::filter] The radius (%g) and depth tolerance "
-        "(%g) must be positive and the minimum correlation (%g) in [-1, 1].\n",
-        static_cast<double> (radius_),
-        static_cast<double> (depth_tolerance_),
-        static_cast<double> (min_correlation_));
-    return false;
-  }
-  if (!isValidKeypointSurface (surface_, surface_.keypoint_pixels.size()) ||
-      !keypointsHavePixels (clusters, surface_.keypoint_pixels.size())) {
-    PCL_ERROR (
-        "[mid::PhotometricVerification::filter] The keypoint surface must be an "
-        "organized frame with a pixel inside it for every keypoint of the clusters.\n");
-    return false;
-  }
-  if (!surface_.intensity || surface_.intensity->size() != surface_.organized->size()) {
-    PCL_ERROR (
-        "[mid::PhotometricVerification::filter] The keypoint surface needs one grey "
-        "level per pixel (%zu given for %zu pixels).\n",
-        surface_.intensity ? surface_.intensity->size() : std::size_t{0},
-        static_cast<std::size_t> (surface_.organized->size()));
-    return false;
-  }
-  if (!has_pinhole_) {
-    PCL_ERROR (
-        "[mid::PhotometricVerification::filter] No pinhole camera fits the organized "
-        "frame (its points do not project onto their pixels).\n");
+  std::string problem = inputProblem();
+  if (problem.empty() &&
+      !std::all_of (clusters.begin(), clusters.end(), [this] (const TripletCluster& c) {
+        return keypointsHavePixels (c, surface_.keypoint_pixels.size());
+      }))
+    problem = "a keypoint of the clusters has no pixel in the keypoint surface";
+  if (!problem.empty()) {
+    PCL_ERROR ("[mid::PhotometricVerification::filter] %s.\n", problem.c_str());
     return false;
   }
   for (const auto& cluster : clusters) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <pcl/common/io.h>
+#include <pcl/common/transforms.h>
 
 #include <algorithm>
 #include <set>
@@ -133,6 +134,38 @@ TEST (MultiInstanceDiscovery, VerifiesEveryClusterByTheLookOfTheSurface)
   EXPECT_EQ (rejected.rejected_clusters, rejected.clusters);
   EXPECT_EQ (rejected.clusters, confirmed.clusters);
   EXPECT_TRUE (rejected.models.empty());
+
+  // The same keypoints again without the verification: no stale count.
+  mid::DiscoveryResult again = rejected;
+  again.timing_ms.clear();
+  mid::DiscoveryParameters lenient = strict;
+  lenient.verify_clusters = false;
+  auto frame = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>>();
+  pcl::copyPointCloud (*scene.cloud, *frame);
+  ASSERT_TRUE (mid::discoverFromKeypoints (lenient, again, nullptr, frame));
+  EXPECT_EQ (again.rejected_clusters, 0u);
+  EXPECT_EQ (again.models.size(), 1u);
+}
+
+TEST (MultiInstanceDiscovery, SkipsTheVerificationInAFrameNoCameraFits)
+{
+  // The frame moved into another coordinate frame (a robot's base, say): no pinhole camera
+  // fits it, so the clusters cannot be verified, and discovery goes on without the check.
+  const auto scene = mid::test::renderBoxes ({
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.13, -0.02, 0.85, 10.0, 15.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.12, 0.02, 0.85, 70.0, -10.0)},
+  });
+  Eigen::Affine3f to_base (
+      Eigen::AngleAxisf (0.6f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized()));
+  to_base.translation() = Eigen::Vector3f (0.4f, -0.2f, 1.1f);
+  mid::test::RenderedObjectsScene moved = scene;
+  moved.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBA>>();
+  pcl::transformPointCloud (*scene.cloud, *moved.cloud, to_base);
+  const auto result = discover (moved);
+  EXPECT_GT (result.clusters, 0u);
+  EXPECT_EQ (result.rejected_clusters, 0u);
+  ASSERT_EQ (result.models.size(), 1u);
+  EXPECT_EQ (result.models.front().instances.size(), 2u);
 }
 
 TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)

@@ -181,6 +181,76 @@ TEST (PhotometricVerification, KeepsTheTruePoseAndRejectsAPoseOntoAnotherPrint)
   EXPECT_EQ (verified.size(), 2u);
 }
 
+TEST (PhotometricVerification, WorksInAFrameThatLooksDownMinusZ)
+{
+  // The same frame turned by a half turn about x (PCL's milk scene is stored so): the poses
+  // turn with it, the pixels stay.
+  const auto scene = threeBoxes();
+  PrintedFaces faces (scene);
+  auto turned =
+      pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*faces.surface.organized);
+  for (auto& p : *turned) {
+    p.y = -p.y;
+    p.z = -p.z;
+  }
+  faces.surface.organized = turned;
+  const Eigen::Isometry3d half_turn (
+      Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX()));
+  for (auto& pose : faces.poses)
+    pose = half_turn * pose;
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (faces.surface);
+  ASSERT_TRUE (verification.hasProjection());
+  mid::TripletClusters verified;
+  ASSERT_TRUE (
+      verification.filter ({faces.cluster (0, 2), faces.cluster (0, 1)}, verified));
+  ASSERT_EQ (verified.size(), 1u);
+  EXPECT_EQ (verified.front().target_indices, faces.cluster (0, 1).target_indices);
+}
+
+TEST (PhotometricVerification, NeverPairsAPointMovedBehindTheCamera)
+{
+  // A half turn about the camera's x axis puts every point behind the camera, where the
+  // projection sees it in the mirrored column: there, box 1 lies exactly as far from the
+  // camera as box 0. That is no evidence.
+  const PrintedFaces faces (mid::test::renderBoxes (
+      {{kApple, {0.12, 0.09, 0.04}, boxPose (-0.1, 0.0, 0.8, 0.0)},
+       {kApple, {0.12, 0.09, 0.04}, boxPose (0.1, 0.0, 0.8, 0.0)}},
+      0.95));
+  mid::TripletCluster behind = faces.cluster (0, 1);
+  behind.transformation = Eigen::Affine3f (Eigen::AngleAxisf (static_cast<float> (M_PI),
+                                                              Eigen::Vector3f::UnitX()))
+                              .matrix();
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (faces.surface);
+  verification.setMinPairs (1);
+  bool tested = true;
+  EXPECT_EQ (verification.correlation (behind, tested), 0.0);
+  EXPECT_FALSE (tested);
+}
+
+TEST (PhotometricVerification, KeepsWhatAUniformSurfaceOrTooFewPairsCannotTell)
+{
+  const PrintedFaces faces (threeBoxes());
+  const mid::TripletClusters other{faces.cluster (0, 2)};
+  mid::TripletClusters verified;
+  // A frame without contrast (all one grey level): the pose onto the other print stays.
+  mid::KeypointSurface flat = faces.surface;
+  flat.intensity = std::make_shared<const std::vector<float>> (
+      faces.surface.intensity->size(), 128.0f);
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (flat);
+  ASSERT_TRUE (verification.filter (other, verified));
+  EXPECT_EQ (verified.size(), 1u);
+  // Asking for more pairs than the keypoints' surroundings hold: untested, kept.
+  verification.setKeypointSurface (faces.surface);
+  ASSERT_TRUE (verification.filter (other, verified));
+  EXPECT_TRUE (verified.empty());
+  verification.setMinPairs (100000);
+  ASSERT_TRUE (verification.filter (other, verified));
+  EXPECT_EQ (verified.size(), 1u);
+}
+
 TEST (PhotometricVerification, GreyLevelsWeighTheChannelsLikeTheEye)
 {
   pcl::PointCloud<pcl::PointXYZRGB> frame (3, 1);
@@ -223,11 +293,13 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   const mid::TripletClusters stale{faces.cluster (0, 2)};
   const auto refuses = [&clusters, &stale] (const mid::KeypointSurface& surface,
                                             float radius = 0.015f,
-                                            float correlation = 0.4f) {
+                                            float correlation = 0.4f,
+                                            float tolerance = 0.01f) {
     mid::PhotometricVerification verification;
     verification.setKeypointSurface (surface);
     verification.setRadius (radius);
     verification.setMinCorrelation (correlation);
+    verification.setDepthTolerance (tolerance);
     mid::TripletClusters verified = stale;
     return !verification.filter (clusters, verified) && verified.empty();
   };
@@ -252,5 +324,8 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   EXPECT_TRUE (refuses (shuffled));
   EXPECT_TRUE (refuses (faces.surface, 0.0f));
   EXPECT_TRUE (refuses (faces.surface, 0.015f, 1.5f));
+  EXPECT_TRUE (refuses (faces.surface, 0.015f, -1.5f));
+  EXPECT_TRUE (refuses (faces.surface, 0.015f, 0.4f, 0.0f));
+  EXPECT_TRUE (refuses (faces.surface, NAN));
   EXPECT_FALSE (refuses (faces.surface));
 }

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <random>
 
 TEST (IntrinsicsEstimation, RecoversTheCameraOfADepthImage)
 {
@@ -34,4 +36,19 @@ TEST (IntrinsicsEstimation, RefusesCloudsWithoutACamera)
   EXPECT_FALSE (mid::visualization::estimateIntrinsics (*cloud, intrinsics));
   cloud->at (10, 10).getVector3fMap() = Eigen::Vector3f (0.1f, 0.1f, 1.0f);
   EXPECT_FALSE (mid::visualization::estimateIntrinsics (*cloud, intrinsics));
+
+  // Points that do not lie on their pixels' rays (shuffled over the pixels).
+  auto shuffled = mid::test::makeTwoCopiesScene().cloud;
+  std::mt19937 random (5);
+  std::shuffle (shuffled->begin(), shuffled->end(), random);
+  EXPECT_FALSE (mid::visualization::estimateIntrinsics (*shuffled, intrinsics));
+
+  // A frame looking down -z (as PCL's milk scene): no positive focal length.
+  auto turned = mid::test::makeTwoCopiesScene().cloud;
+  for (auto& point : *turned) {
+    point.y = -point.y;
+    point.z = -point.z;
+  }
+  EXPECT_FALSE (mid::visualization::estimateIntrinsics (*turned, intrinsics));
+  EXPECT_EQ (intrinsics.fx, 0.0);
 }

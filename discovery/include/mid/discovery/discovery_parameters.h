@@ -95,8 +95,9 @@ struct DiscoveryParameters
   // --- Verification (PhotometricVerification; every grouping) ---
   /** \brief Keep only the clusters whose pose carries the look of the surface around one point
     * set onto the other (not in the paper: chance matches on shiny parts can agree on a pose
-    * that moves one part onto another; see PhotometricVerification). Needs the frame's colour;
-    * without it (discoverFromKeypoints() given no organized frame) nothing is checked.
+    * that moves one part onto another; see PhotometricVerification). Needs the organized
+    * colour frame: without one (discoverFromKeypoints() given none), or when no pinhole camera
+    * fits it (a frame moved out of its camera's coordinates: a PCL_WARN), nothing is checked.
     */
   bool verify_clusters = true;
   /** \brief How far around a keypoint the surface is compared (metres, > 0). */

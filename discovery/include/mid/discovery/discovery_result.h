@@ -30,8 +30,9 @@ struct DiscoveryResult
   std::size_t triplets = 0;
   std::size_t clusters = 0;
   ///@}
-  /** \brief How many of the clusters the photometric verification rejected (not in the
-    * paper; DiscoveryParameters::verify_clusters). The model builder gets the others.
+  /** \brief How many clusters the photometric verification rejected (not in the paper;
+    * DiscoveryParameters::verify_clusters), in both rounds (`clusters` counts the first
+    * round's only). The model builder gets the others.
     */
   std::size_t rejected_clusters = 0;
   /** \brief The discovered objects, each with its instances (poses, keypoints). */

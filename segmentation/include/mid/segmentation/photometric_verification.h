@@ -8,6 +8,7 @@
 #include <pcl/point_types.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace mid {
@@ -25,8 +26,9 @@ namespace mid {
   * the point's own pixel and at its new pixel form a pair. The normalized cross-correlation of
   * those pairs is near 1 for two copies of one object (same print, same light, whatever the
   * gain) and near 0 for unrelated surfaces. The same is done from Q back to P, and a cluster is
-  * kept when both correlations reach the minimum, or when fewer pairs than the minimum count
-  * were found (then the frame cannot tell, e.g. everything moved is occluded).
+  * kept when both correlations reach the minimum, or when the frame cannot tell: fewer pairs
+  * than the minimum count either way (everything moved is occluded, say), or grey levels that
+  * do not vary (a uniform surface, a frame without colour).
   *
   * The camera need not be given: the projection is fitted to the organized frame
   * (fitFramePinhole()).
@@ -117,15 +119,30 @@ public:
   bool
   filter (const TripletClusters& clusters, TripletClusters& verified) const;
 
-  /** \brief The smaller of a cluster's two correlations (P onto Q and back), and whether both
-    * directions had the minimum number of pairs. For reports and tests; filter() decides with
-    * it. Same preconditions as filter(), not checked (returns 0, untested, without a fitted
-    * projection).
+  /** \brief The smaller of a cluster's two correlations (P onto Q and back), and whether the
+    * frame could tell: both directions had the minimum number of pairs, and grey levels that
+    * vary (a uniform surface, or a frame without colour, tells nothing). For reports and
+    * tests; filter() decides with it.
+    * \return 0, untested, where filter() would refuse the input
     */
   double
   correlation (const TripletCluster& cluster, bool& tested) const;
 
+  /** \brief True if a pinhole camera fits the keypoint surface's frame (fitFramePinhole()):
+    * without one, filter() refuses. A frame that is not in its camera's coordinates (moved into
+    * a robot's frame, say) has none.
+    */
+  bool
+  hasProjection () const
+  {
+    return has_pinhole_;
+  }
+
 private:
+  /** \brief What is wrong with the parameters or the keypoint surface; empty if nothing. */
+  std::string
+  inputProblem () const;
+
   KeypointSurface surface_;
   FramePinhole pinhole_;
   bool has_pinhole_ = false;
