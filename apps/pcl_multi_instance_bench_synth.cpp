@@ -11,6 +11,7 @@
 #include <mid/simulation/deterministic_random.h>
 #include <mid/simulation/frame_preview.h>
 #include <mid/simulation/product_catalog.h>
+#include <mid/simulation/scene_renderer.h>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -98,8 +99,9 @@ printHelp (const char* program)
   print_info (")\n  -sensor NAME        kinect (Kinect v1-like noise, holes) or exact "
               "(default ");
   print_value ("%s", defaults.sensor.c_str());
-  print_info (")\n  -supersampling N    colour rays per pixel along each axis, 1 to 4 "
-              "(default ");
+  print_info (")\n  -supersampling N    colour rays per pixel along each axis, 1 to %d "
+              "(default ",
+              mid::simulation::SceneRenderer::kMaxSupersampling);
   print_value ("%d", defaults.supersampling);
   print_info (
       ")\n  -preview FILE       also write a PNG of the first frame of each scenario: "
@@ -154,8 +156,12 @@ parseOptions (int argc, char** argv, Options& options)
        instances_per_type = options.instances_per_type;
   if (!mid::apps::parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
       !mid::apps::parseIntegerOption (argc, argv, "-frames", 1, 1000, frames) ||
-      !mid::apps::parseIntegerOption (
-          argc, argv, "-supersampling", 1, 4, supersampling) ||
+      !mid::apps::parseIntegerOption (argc,
+                                      argv,
+                                      "-supersampling",
+                                      1,
+                                      mid::simulation::SceneRenderer::kMaxSupersampling,
+                                      supersampling) ||
       !mid::apps::parseIntegerOption (
           argc, argv, "-instances_per_type", 0, 9, instances_per_type))
     return false;

@@ -75,8 +75,9 @@ printHelp (const char* program)
   print_info (")\n  -sensor NAME        kinect (Kinect v1-like noise, holes) or exact "
               "(default ");
   print_value ("%s", defaults.sensor.c_str());
-  print_info (")\n  -supersampling N    colour rays per pixel along each axis, 1 to 4 "
-              "(default ");
+  print_info (")\n  -supersampling N    colour rays per pixel along each axis, 1 to %d "
+              "(default ",
+              mid::simulation::SceneRenderer::kMaxSupersampling);
   print_value ("%d", defaults.supersampling);
   print_info (
       ")\n\nOutput: scene.pcd (organized XYZRGB, binary_compressed, metres), rgb.png, "
@@ -96,8 +97,12 @@ parseOptions (int argc, char** argv, Options& options)
   if (!mid::apps::parseIntegerOption (argc, argv, "-seed", 0, 4294967295L, seed) ||
       !mid::apps::parseIntegerOption (argc, argv, "-instances", 1, 10, instances) ||
       !mid::apps::parseIntegerOption (argc, argv, "-distractors", 0, 2, distractors) ||
-      !mid::apps::parseIntegerOption (
-          argc, argv, "-supersampling", 1, 4, supersampling))
+      !mid::apps::parseIntegerOption (argc,
+                                      argv,
+                                      "-supersampling",
+                                      1,
+                                      mid::simulation::SceneRenderer::kMaxSupersampling,
+                                      supersampling))
     return false;
   options.scene.seed = static_cast<std::uint32_t> (seed);
   options.scene.instances = static_cast<int> (instances);

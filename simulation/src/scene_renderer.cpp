@@ -13,9 +13,6 @@ namespace simulation {
 
 namespace {
 
-/** Largest supported supersampling factor (n x n rays per pixel). */
-constexpr int kMaxSupersampling = 16;
-
 /** A scene object with everything a ray needs precomputed. */
 struct PreparedObject
 {

@@ -107,6 +107,7 @@ expect_failure("one copy per type" ${bad} -instances_per_type 1)
 expect_failure("ten copies per type" ${bad} -instances_per_type 10)
 expect_failure("unknown option" ${bad} -bogus 1)
 expect_failure("missing value" ${bad} -frames)
+expect_failure("supersampling above the renderer's limit" ${bad} -supersampling 17)
 expect_failure("unwritable preview" ${bad} -frames 1 -scenarios none -supersampling 1
                -preview ${WORK_DIR}/missing/preview.png)
 if(EXISTS ${bad})

@@ -63,9 +63,12 @@ public:
     return ambient_;
   }
 
+  /** \brief Largest supported number of colour rays per pixel along each axis. */
+  static constexpr int kMaxSupersampling = 16;
+
   /** \brief Colour rays per pixel along each axis (n x n rays averaged): anti-aliases texture
     * and edges. Depth, instances and normals always use the single pixel-centre ray.
-    * Default 1.
+    * Default 1; 1 to kMaxSupersampling (render() fails otherwise).
     */
   void
   setSupersampling (int samples)
