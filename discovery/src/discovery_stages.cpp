@@ -10,6 +10,7 @@
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
 #include <mid/registration/region_model_merger.h>
+#include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/transformation_space_clustering.h>
@@ -367,8 +368,8 @@ discoverLeftovers (const DiscoveryParameters& p,
   return true;
 }
 
-/** The points of an organized colour frame, and its grey levels if `grey` (no keypoints yet);
-  * empty for none.
+/** The points of an organized colour frame, and its grey levels and projection if `grey` (no
+  * keypoints yet); empty for none.
   */
 KeypointSurface
 frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized, bool grey)
@@ -379,9 +380,14 @@ frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized, bool
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  if (grey)
-    frame.intensity =
-        std::make_shared<const std::vector<float>> (greyLevels (*organized));
+  if (!grey)
+    return frame;
+  frame.intensity =
+      std::make_shared<const std::vector<float>> (greyLevels (*organized));
+  // Fitted once for both rounds of the verification.
+  FramePinhole pinhole;
+  if (fitFramePinhole (*points, pinhole))
+    frame.pinhole = std::make_shared<const FramePinhole> (pinhole);
   return frame;
 }
 

@@ -46,6 +46,13 @@ struct LineFit
 } // namespace
 
 bool
+FramePinhole::isValid() const
+{
+  return std::isfinite (fx) && std::isfinite (fy) && std::isfinite (cx) &&
+         std::isfinite (cy) && fx != 0.0 && fy != 0.0;
+}
+
+bool
 FramePinhole::project (
     const Eigen::Vector3f& point, int width, int height, int& u, int& v) const
 {

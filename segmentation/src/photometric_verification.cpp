@@ -135,7 +135,13 @@ void
 PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)
 {
   surface_ = surface;
-  has_pinhole_ = surface_.organized && fitFramePinhole (*surface_.organized, pinhole_);
+  if (surface_.pinhole) {
+    pinhole_ = *surface_.pinhole;
+    has_pinhole_ = pinhole_.isValid();
+  }
+  else
+    has_pinhole_ =
+        surface_.organized && fitFramePinhole (*surface_.organized, pinhole_);
 }
 
 std::string
@@ -156,8 +162,11 @@ PhotometricVerification::inputProblem() const
            std::to_string (surface_.intensity ? surface_.intensity->size() : 0) +
            " given for " + std::to_string (surface_.organized->size()) + " pixels)";
   if (!has_pinhole_)
-    return "no pinhole camera fits the organized frame (its points do not project onto "
-           "their pixels)";
+    return surface_.pinhole
+               ? "the keypoint surface's pinhole projection needs finite, "
+                 "non-zero focal lengths and a finite principal point"
+               : "no pinhole camera fits the organized frame (its points do not "
+                 "project onto their pixels)";
   return {};
 }
 

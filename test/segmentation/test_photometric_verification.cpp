@@ -208,6 +208,33 @@ TEST (PhotometricVerification, WorksInAFrameThatLooksDownMinusZ)
   EXPECT_EQ (verified.front().target_indices, faces.cluster (0, 1).target_indices);
 }
 
+TEST (PhotometricVerification, UsesTheProjectionTheKeypointSurfaceHolds)
+{
+  const auto scene = threeBoxes();
+  PrintedFaces faces (scene);
+  const auto& camera = scene.frame.camera;
+  const mid::FramePinhole exact{camera.fx, camera.fy, camera.cx, camera.cy};
+  faces.surface.pinhole = std::make_shared<const mid::FramePinhole> (exact);
+  mid::PhotometricVerification verification;
+  verification.setKeypointSurface (faces.surface);
+  ASSERT_TRUE (verification.hasProjection());
+  bool tested = false;
+  EXPECT_GT (verification.correlation (faces.cluster (0, 1), tested), 0.8);
+  EXPECT_TRUE (tested);
+
+  // A principal point 25 pixels off (the wrong camera): every moved point is looked up 25
+  // pixels beside its true pixel, so even the true pose between the copies fails. A fit of
+  // the frame would have kept it.
+  mid::FramePinhole shifted = exact;
+  shifted.cx += 25.0;
+  faces.surface.pinhole = std::make_shared<const mid::FramePinhole> (shifted);
+  verification.setKeypointSurface (faces.surface);
+  EXPECT_LT (verification.correlation (faces.cluster (0, 1), tested), 0.4);
+  mid::TripletClusters verified;
+  ASSERT_TRUE (verification.filter ({faces.cluster (0, 1)}, verified));
+  EXPECT_TRUE (verified.empty());
+}
+
 TEST (PhotometricVerification, NeverPairsAPointMovedBehindTheCamera)
 {
   // A half turn about the camera's x axis puts every point behind the camera, where the
@@ -322,6 +349,12 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   std::shuffle (points->begin(), points->end(), random);
   shuffled.organized = points;
   EXPECT_TRUE (refuses (shuffled));
+  for (const double focal : {0.0, double (NAN)}) {
+    mid::KeypointSurface bad_pinhole = faces.surface;
+    bad_pinhole.pinhole = std::make_shared<const mid::FramePinhole> (
+        mid::FramePinhole{focal, 500.0, 320.0, 240.0});
+    EXPECT_TRUE (refuses (bad_pinhole));
+  }
   EXPECT_TRUE (refuses (faces.surface, 0.0f));
   EXPECT_TRUE (refuses (faces.surface, 0.015f, 1.5f));
   EXPECT_TRUE (refuses (faces.surface, 0.015f, -1.5f));

@@ -19,6 +19,12 @@ struct FramePinhole
   double fx = 0.0, fy = 0.0, cx = 0.0, cy = 0.0;
   ///@}
 
+  /** \brief True if the focal lengths are finite and non-zero and the principal point is
+    * finite: a projection project() can use.
+    */
+  bool
+  isValid () const;
+
   /** \brief The pixel (column u, row v) of a camera-frame point.
     * \return false if the point lies on the camera plane or projects outside a width x
     * height image

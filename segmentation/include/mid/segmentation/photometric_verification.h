@@ -30,14 +30,15 @@ namespace mid {
   * than the minimum count either way (everything moved is occluded, say), or grey levels that
   * do not vary (a uniform surface, a frame without colour).
   *
-  * The camera need not be given: the projection is fitted to the organized frame
-  * (fitFramePinhole()).
+  * The camera need not be given: unless the keypoint surface holds the projection
+  * (KeypointSurface::pinhole), it is fitted to the organized frame (fitFramePinhole()).
   */
 class PhotometricVerification
 {
 public:
   /** \brief The frame, its grey levels (KeypointSurface::intensity) and the pixel of each
-    * keypoint the clusters refer to. Fits the frame's projection (fitFramePinhole()) once.
+    * keypoint the clusters refer to. Takes the frame's projection from
+    * KeypointSurface::pinhole, or fits it here (fitFramePinhole()) when that is null.
     */
   ///@{
   void
@@ -112,8 +113,8 @@ public:
     * surface's keypoint pixels)
     * \param[out] verified the kept clusters, in their input order (cleared on failure)
     * \return false (with a PCL_ERROR) if the keypoint surface is not valid for the clusters'
-    * keypoints (isValidKeypointSurface()), has no grey level per pixel, if no pinhole camera
-    * fits the frame, or a parameter is out of range (radius and tolerance > 0, correlation in
+    * keypoints (isValidKeypointSurface()), has no grey level per pixel, if the frame has no
+    * projection (hasProjection()), or a parameter is out of range (radius and tolerance > 0, correlation in
     * [-1, 1])
     */
   bool
@@ -128,9 +129,10 @@ public:
   double
   correlation (const TripletCluster& cluster, bool& tested) const;
 
-  /** \brief True if a pinhole camera fits the keypoint surface's frame (fitFramePinhole()):
-    * without one, filter() refuses. A frame that is not in its camera's coordinates (moved into
-    * a robot's frame, say) has none.
+  /** \brief True if the keypoint surface's frame has a projection: a valid
+    * KeypointSurface::pinhole, or else a pinhole camera that fits the frame
+    * (fitFramePinhole()). Without one, filter() refuses. A frame that is not in its camera's
+    * coordinates (moved into a robot's frame, say) has none.
     */
   bool
   hasProjection () const

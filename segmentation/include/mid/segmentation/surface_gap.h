@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mid/segmentation/frame_pinhole.h>
+
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/types.h>
@@ -25,6 +27,11 @@ struct KeypointSurface
     * (PhotometricVerification).
     */
   std::shared_ptr<const std::vector<float>> intensity = nullptr;
+  /** \brief The projection of `organized` onto its pixels when known (the camera's intrinsics,
+    * or a fit kept for several steps), or null: the steps that project points
+    * (PhotometricVerification) then fit it with fitFramePinhole().
+    */
+  std::shared_ptr<const FramePinhole> pinhole = nullptr;
 };
 
 /** \brief True if `surface` is organized and gives a pixel inside it for each of
