@@ -114,8 +114,8 @@ public:
     * \param[out] verified the kept clusters, in their input order (cleared on failure)
     * \return false (with a PCL_ERROR) if the keypoint surface is not valid for the clusters'
     * keypoints (isValidKeypointSurface()), has no grey level per pixel, if the frame has no
-    * projection (hasProjection()), or a parameter is out of range (radius and tolerance > 0, correlation in
-    * [-1, 1])
+    * projection (hasProjection()), or a parameter is out of range (radius and tolerance > 0,
+    * correlation in [-1, 1])
     */
   bool
   filter (const TripletClusters& clusters, TripletClusters& verified) const;
