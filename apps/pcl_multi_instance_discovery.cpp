@@ -124,6 +124,21 @@ printHelp (const char* program)
   line ("-leftover_margin M",
         "keypoints this far from every instance's box are left over, metres",
         static_cast<double> (d.leftover_margin));
+  line ("-guided_seed_dist D",
+        "guided search: largest descriptor distance of its one seed match",
+        static_cast<double> (d.guided_seed_distance));
+  line ("-guided_desc_dist D",
+        "guided search: largest descriptor distance of a guided match",
+        static_cast<double> (d.guided_descriptor_distance));
+  line ("-guided_inliers N",
+        "guided search: fewest inliers of an instance",
+        static_cast<double> (d.guided_min_inliers));
+  line ("-guided_corr C",
+        "guided search: smallest grey-level correlation, each way",
+        static_cast<double> (d.guided_min_correlation));
+  line ("-guided_hypotheses N",
+        "guided search: seed matches tried per model",
+        static_cast<double> (d.guided_hypotheses));
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -154,6 +169,9 @@ printHelp (const char* program)
   print_info ("  -no_leftovers       no second round on the keypoints outside every "
               "instance\n");
   print_info ("                      (the paper's behaviour)\n");
+  print_info ("  -no_guided          no search for more instances from single matches "
+              "(the\n");
+  print_info ("                      paper's behaviour)\n");
   print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
@@ -183,6 +201,12 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_region_merge", 0},
                                       {"-no_leftovers", 0},
                                       {"-no_verification", 0},
+                                      {"-no_guided", 0},
+                                      {"-guided_seed_dist", 1},
+                                      {"-guided_desc_dist", 1},
+                                      {"-guided_inliers", 1},
+                                      {"-guided_corr", 1},
+                                      {"-guided_hypotheses", 1},
                                       {"-min_correlation", 1},
                                       {"-verify_radius", 1},
                                       {"-leftover_desc_dist", 1},
@@ -258,6 +282,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.merge_through_regions = !pcl::console::find_switch (argc, argv, "-no_region_merge");
   p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
+  p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -287,6 +312,11 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
       parseNumber (argc, argv, "-min_correlation", p.min_photometric_correlation) &&
       parseNumber (argc, argv, "-verify_radius", p.verification_radius) &&
+      parseNumber (argc, argv, "-guided_seed_dist", p.guided_seed_distance) &&
+      parseNumber (argc, argv, "-guided_desc_dist", p.guided_descriptor_distance) &&
+      parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&
+      parseNumber (argc, argv, "-guided_corr", p.guided_min_correlation) &&
+      parseNumber (argc, argv, "-guided_hypotheses", p.guided_hypotheses) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

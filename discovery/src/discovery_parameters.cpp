@@ -161,6 +161,26 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "leftover_margin",
              static_cast<double> (p.leftover_margin),
              "finite and >= 0");
+  c.require (p.guided_seed_distance > 0.0f,
+             "guided_seed_distance",
+             static_cast<double> (p.guided_seed_distance),
+             "> 0");
+  c.require (p.guided_descriptor_distance > 0.0f,
+             "guided_descriptor_distance",
+             static_cast<double> (p.guided_descriptor_distance),
+             "> 0");
+  c.require (p.guided_min_inliers >= 3,
+             "guided_min_inliers",
+             static_cast<double> (p.guided_min_inliers),
+             ">= 3");
+  c.require (p.guided_min_correlation >= -1.0f && p.guided_min_correlation <= 1.0f,
+             "guided_min_correlation",
+             static_cast<double> (p.guided_min_correlation),
+             "in [-1, 1]");
+  c.require (p.guided_hypotheses >= 1,
+             "guided_hypotheses",
+             static_cast<double> (p.guided_hypotheses),
+             ">= 1");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -11,6 +11,7 @@
 #include <mid/registration/multi_instance_model_builder.h>
 #include <mid/registration/region_model_merger.h>
 #include <mid/segmentation/frame_pinhole.h>
+#include <mid/segmentation/guided_instance_search.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/transformation_space_clustering.h>
@@ -137,6 +138,72 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
                    p.duplicate_distance);
       used.insert (instance.keypoints.begin(), instance.keypoints.end());
     }
+    if (!found.empty())
+      refineModel (model, *result.keypoints, p.refinement_iterations);
+  }
+  return true;
+}
+
+void
+markInstances (const KeypointCloud& keypoints,
+               const ObjectModels& models,
+               float margin,
+               std::vector<bool>& taken);
+
+/** Look for more instances of each model from single matches
+  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
+  * the frame, its grey levels and the image keypoints are known.
+  */
+bool
+searchGuidedInstances (const DiscoveryParameters& p,
+                       const KeypointSurface& surface,
+                       DiscoveryResult& result)
+{
+  if (!p.guided_search || !surface.organized || !surface.intensity ||
+      result.image_keypoints.size() != result.keypoints->size() ||
+      result.models.empty())
+    return true;
+  if (!surface.pinhole) {
+    if (!p.verify_clusters) // the verification has said so otherwise
+      PCL_WARN (
+          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+          "(not in its camera's coordinates?): no guided instance search.\n");
+    return true;
+  }
+  GuidedInstanceSearch search;
+  search.setInputKeypoints (result.keypoints);
+  search.setInputDescriptors (result.descriptors);
+  search.setImageKeypoints (result.image_keypoints);
+  search.setKeypointSurface (surface);
+  search.setSeedDescriptorDistance (p.guided_seed_distance);
+  search.setGuidedDescriptorDistance (p.guided_descriptor_distance);
+  search.setInlierThreshold (p.inlier_threshold);
+  search.setMinInliers (p.guided_min_inliers);
+  search.setMinCorrelation (p.guided_min_correlation);
+  search.setCorrelationRadius (p.verification_radius);
+  search.setDepthTolerance (p.verification_depth_tolerance);
+  search.setMaxHypotheses (p.guided_hypotheses);
+  for (auto& model : result.models) {
+    std::vector<bool> taken (result.keypoints->size(), false);
+    markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
+    pcl::Indices candidates;
+    ModelInstances copies;
+    for (std::size_t k = 0; k < taken.size(); ++k)
+      if (!taken[k])
+        candidates.push_back (static_cast<pcl::index_t> (k));
+    for (const auto& other : result.models)
+      copies.insert (copies.end(), other.instances.begin(), other.instances.end());
+    search.setCandidates (candidates);
+    search.setFoundInstances (copies);
+    ModelInstances found;
+    if (!search.search (model, found))
+      return false;
+    for (const auto& instance : found)
+      addInstance (model,
+                   instance,
+                   *result.descriptors,
+                   p.duplicate_angle,
+                   p.duplicate_distance);
     if (!found.empty())
       refineModel (model, *result.keypoints, p.refinement_iterations);
   }
@@ -475,6 +542,8 @@ runStages (const DiscoveryParameters& p,
     return false;
   if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
     return false;
+  if (!searchGuidedInstances (p, keypoint_surface, result))
+    return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
   result.timing_ms.emplace_back ("detection", watch.getTime());
@@ -495,7 +564,10 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                        const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (p, result, surface, frameSurface (organized, p.verify_clusters)))
+  if (runStages (p,
+                 result,
+                 surface,
+                 frameSurface (organized, p.verify_clusters || p.guided_search)))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();

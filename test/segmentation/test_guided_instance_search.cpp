@@ -1,0 +1,201 @@
+#include "rendered_objects_scene.h"
+
+#include <mid/features/sift_keypoint_extractor.h>
+#include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/photometric_verification.h>
+
+#include <gtest/gtest.h>
+#include <pcl/common/io.h>
+
+#include <set>
+
+namespace {
+
+using mid::test::boxPose;
+
+const char* const kApple = "tropicana_apple_juice_front.jpg";
+const char* const kSoy = "alpro_soya_front.jpg";
+const Eigen::Vector3d kSize{0.12, 0.09, 0.04};
+
+/** Three copies of one print, each turned its own way in the image (box 1 also tilted), and a
+  * box of another print; every keypoint looked up in the truth; a model made from the truth
+  * of box 0 (its frame is the box's own), with one instance there.
+  */
+struct FourBoxes
+{
+  mid::test::RenderedObjectsScene scene;
+  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
+  mid::SIFTDescriptorCloud::Ptr descriptors =
+      pcl::make_shared<mid::SIFTDescriptorCloud>();
+  mid::ImageKeypoints image_keypoints;
+  mid::KeypointSurface surface;
+  std::vector<int> box_of; ///< per keypoint, the box it lies on (-1: the table)
+  mid::ObjectModel model;
+
+  FourBoxes()
+  {
+    scene = mid::test::renderBoxes (
+        {{kApple, kSize, boxPose (-0.12, -0.07, 0.8, 15.0)},
+         {kApple, kSize, boxPose (0.11, -0.06, 0.84, 200.0, 20.0)},
+         {kApple, kSize, boxPose (-0.1, 0.1, 0.82, -70.0)},
+         {kSoy, kSize, boxPose (0.12, 0.11, 0.81, 30.0)}},
+        0.95);
+    mid::SIFTKeypointExtractor<pcl::PointXYZRGBA> extractor;
+    extractor.setInputCloud (scene.cloud);
+    EXPECT_TRUE (extractor.compute (*keypoints, *descriptors));
+    image_keypoints = extractor.getImageKeypoints();
+    auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    pcl::copyPointCloud (*scene.cloud, *points);
+    pcl::PointCloud<pcl::PointXYZRGB> colour;
+    pcl::copyPointCloud (*scene.cloud, colour);
+    surface.organized = points;
+    surface.intensity =
+        std::make_shared<const std::vector<float>> (mid::greyLevels (colour));
+    for (const auto& k : image_keypoints) {
+      surface.keypoint_pixels.push_back (k.pixel_index);
+      box_of.push_back (mid::test::boxUnderKeypoints (scene, {{k.u, k.v}}));
+    }
+
+    const Eigen::Matrix4f pose = scene.boxes[0].pose.matrix().cast<float>();
+    const Eigen::Affine3f to_model (pose.inverse());
+    mid::ModelInstance instance;
+    instance.pose = pose;
+    for (std::size_t k = 0; k < keypoints->size(); ++k) {
+      if (box_of[k] != 0)
+        continue;
+      pcl::PointNormal landmark = (*keypoints)[k];
+      landmark.getVector3fMap() = to_model * (*keypoints)[k].getVector3fMap();
+      landmark.getNormalVector3fMap() =
+          to_model.linear() * (*keypoints)[k].getNormalVector3fMap();
+      instance.keypoints.push_back (static_cast<pcl::index_t> (k));
+      instance.landmarks.push_back (static_cast<int> (model.landmarks.size()));
+      model.descriptor_landmarks.push_back (static_cast<int> (model.landmarks.size()));
+      model.landmarks.push_back (landmark);
+      model.descriptors.push_back ((*descriptors)[k]);
+    }
+    model.instances.push_back (instance);
+    mid::updateModelDiameter (model);
+  }
+
+  /** The keypoints on the given boxes. */
+  pcl::Indices
+  on (const std::set<int>& boxes) const
+  {
+    pcl::Indices indices;
+    for (std::size_t k = 0; k < box_of.size(); ++k)
+      if (boxes.count (box_of[k]) > 0)
+        indices.push_back (static_cast<pcl::index_t> (k));
+    return indices;
+  }
+
+  /** A search over every keypoint off box 0. */
+  mid::GuidedInstanceSearch
+  search () const
+  {
+    mid::GuidedInstanceSearch search;
+    search.setInputKeypoints (keypoints);
+    search.setInputDescriptors (descriptors);
+    search.setImageKeypoints (image_keypoints);
+    search.setKeypointSurface (surface);
+    search.setCandidates (on ({-1, 1, 2, 3}));
+    return search;
+  }
+
+  /** The box all of an instance's keypoints lie on, or -1. */
+  int
+  boxOf (const mid::ModelInstance& instance) const
+  {
+    std::set<int> boxes;
+    for (const auto k : instance.keypoints)
+      boxes.insert (box_of[static_cast<std::size_t> (k)]);
+    return boxes.size() == 1 ? *boxes.begin() : -1;
+  }
+};
+
+/** Rotation angle (degrees) and distance (metres) between two poses. */
+std::pair<double, double>
+poseError (const Eigen::Matrix4f& a, const Eigen::Matrix4d& b)
+{
+  const Eigen::Matrix4d d = a.cast<double>().inverse() * b;
+  return {Eigen::AngleAxisd (d.block<3, 3> (0, 0)).angle() * 180.0 / M_PI,
+          (a.cast<double>().block<3, 1> (0, 3) - b.block<3, 1> (0, 3)).norm()};
+}
+
+TEST (GuidedInstanceSearch, FindsTheOtherCopiesAtTheirTruePoses)
+{
+  const FourBoxes boxes;
+  ASSERT_GE (boxes.model.landmarks.size(), 20u);
+  mid::ModelInstances found;
+  ASSERT_TRUE (boxes.search().search (boxes.model, found));
+  std::set<int> copies;
+  for (const auto& instance : found) {
+    const int box = boxes.boxOf (instance);
+    ASSERT_TRUE (box == 1 || box == 2) << "an instance off the copies: box " << box;
+    EXPECT_TRUE (copies.insert (box).second) << "box " << box << " found twice";
+    EXPECT_GE (instance.keypoints.size(), 6u);
+    ASSERT_EQ (instance.keypoints.size(), instance.landmarks.size());
+    // The model frame is box 0's own frame, so the pose is the copy's true pose.
+    const auto error = poseError (
+        instance.pose, boxes.scene.boxes[static_cast<std::size_t> (box)].pose.matrix());
+    EXPECT_LT (error.first, 2.0) << "box " << box;
+    EXPECT_LT (error.second, 0.003) << "box " << box;
+  }
+  EXPECT_EQ (copies, (std::set<int>{1, 2}));
+}
+
+TEST (GuidedInstanceSearch, RefusesAnotherPrint)
+{
+  const FourBoxes boxes;
+  auto search = boxes.search();
+  search.setCandidates (boxes.on ({-1, 3}));
+  mid::ModelInstances found;
+  ASSERT_TRUE (search.search (boxes.model, found));
+  EXPECT_TRUE (found.empty());
+}
+
+TEST (GuidedInstanceSearch, RefusesACopyFoundAlready)
+{
+  const FourBoxes boxes;
+  mid::ModelInstance box1;
+  box1.keypoints = boxes.on ({1});
+  auto search = boxes.search();
+  search.setFoundInstances ({box1});
+  mid::ModelInstances found;
+  ASSERT_TRUE (search.search (boxes.model, found));
+  ASSERT_EQ (found.size(), 1u);
+  EXPECT_EQ (boxes.boxOf (found.front()), 2);
+}
+
+TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
+{
+  const FourBoxes boxes;
+  const mid::ModelInstances stale (1);
+  const auto refused = [&boxes, &stale] (const mid::GuidedInstanceSearch& search,
+                                         const mid::ObjectModel& model) {
+    mid::ModelInstances found = stale;
+    const bool ok = search.search (model, found);
+    return !ok && found.empty();
+  };
+  auto search = boxes.search();
+  search.setImageKeypoints ({});
+  EXPECT_TRUE (refused (search, boxes.model)) << "no image keypoints";
+  search = boxes.search();
+  search.setCandidates ({static_cast<pcl::index_t> (boxes.keypoints->size())});
+  EXPECT_TRUE (refused (search, boxes.model)) << "a candidate beyond the keypoints";
+  search = boxes.search();
+  search.setMinInliers (2);
+  EXPECT_TRUE (refused (search, boxes.model)) << "two inliers";
+  search = boxes.search();
+  search.setMinCorrelation (1.5f);
+  EXPECT_TRUE (refused (search, boxes.model)) << "correlation above 1";
+  search = boxes.search();
+  mid::KeypointSurface no_grey = boxes.surface;
+  no_grey.intensity = nullptr;
+  search.setKeypointSurface (no_grey);
+  EXPECT_TRUE (refused (search, boxes.model)) << "no grey levels";
+  mid::ObjectModel broken = boxes.model;
+  broken.instances.front().landmarks.front() = 100000;
+  EXPECT_TRUE (refused (boxes.search(), broken)) << "an instance of a missing landmark";
+}
+
+} // namespace
