@@ -341,7 +341,8 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
 
   SearchFrame frame{model, *surface_.organized, pinhole_, {}, {}, {}, {}};
   for (const auto c : candidates_)
-    frame.points.push_back (keypoints[static_cast<std::size_t> (c)].getVector3fMap());
+    frame.points.emplace_back (
+        keypoints[static_cast<std::size_t> (c)].getVector3fMap());
   frame.free.assign (nc, true);
   frame.distance.assign (nl * nc, std::numeric_limits<float>::infinity());
   for (std::size_t d = 0; d < model.descriptors.size(); ++d) {

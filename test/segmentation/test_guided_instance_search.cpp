@@ -170,8 +170,8 @@ TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
 {
   const FourBoxes boxes;
   const mid::ModelInstances stale (1);
-  const auto refused = [&boxes, &stale] (const mid::GuidedInstanceSearch& search,
-                                         const mid::ObjectModel& model) {
+  const auto refused = [&stale] (const mid::GuidedInstanceSearch& search,
+                                 const mid::ObjectModel& model) {
     mid::ModelInstances found = stale;
     const bool ok = search.search (model, found);
     return !ok && found.empty();
