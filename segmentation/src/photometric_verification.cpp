@@ -135,13 +135,7 @@ void
 PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)
 {
   surface_ = surface;
-  if (surface_.pinhole) {
-    pinhole_ = *surface_.pinhole;
-    has_pinhole_ = pinhole_.isValid();
-  }
-  else
-    has_pinhole_ =
-        surface_.organized && fitFramePinhole (*surface_.organized, pinhole_);
+  has_pinhole_ = surfacePinhole (surface_, pinhole_);
 }
 
 std::string

@@ -81,4 +81,14 @@ surfaceDropsBetween (const KeypointSurface& surface,
   return false;
 }
 
+bool
+surfacePinhole (const KeypointSurface& surface, FramePinhole& pinhole)
+{
+  if (surface.pinhole) {
+    pinhole = *surface.pinhole;
+    return pinhole.isValid();
+  }
+  return surface.organized && fitFramePinhole (*surface.organized, pinhole);
+}
+
 } // namespace mid

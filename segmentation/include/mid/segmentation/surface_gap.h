@@ -34,6 +34,16 @@ struct KeypointSurface
   std::shared_ptr<const FramePinhole> pinhole = nullptr;
 };
 
+/** \brief The projection of a keypoint surface's frame: KeypointSurface::pinhole when it is
+  * given, else one fitted to the organized frame (fitFramePinhole()).
+  * \param[in] surface the keypoint surface
+  * \param[out] pinhole the projection
+  * \return false if the given projection is not valid (FramePinhole::isValid()), or none was
+  * given and none fits the frame (or there is no frame)
+  */
+bool
+surfacePinhole (const KeypointSurface& surface, FramePinhole& pinhole);
+
 /** \brief True if `surface` is organized and gives a pixel inside it for each of
   * `keypoints` keypoints.
   */
