@@ -1,3 +1,5 @@
+#include "paired_sums.h"
+
 #include <mid/segmentation/frame_pinhole.h>
 
 #include <pcl/common/point_tests.h>
@@ -10,33 +12,22 @@ namespace mid {
 
 namespace {
 
-/** The least-squares line pixel = scale * ratio + offset, from the sums of its samples. */
-struct LineFit
+/** The least-squares line pixel = scale * ratio + offset, from the sums of its samples
+  * (x: ratio, y: pixel).
+  */
+struct LineFit : detail::PairedSums
 {
-  double n = 0.0, sr = 0.0, sp = 0.0, srr = 0.0, srp = 0.0, spp = 0.0;
-
-  void
-  add (double ratio, double pixel)
-  {
-    n += 1.0;
-    sr += ratio;
-    sp += pixel;
-    srr += ratio * ratio;
-    srp += ratio * pixel;
-    spp += pixel * pixel;
-  }
-
   /** False if fewer than 3 samples or the ratios do not vary; rms is the residual's. */
   bool
   solve (double& scale, double& offset, double& rms) const
   {
-    const double den = n * srr - sr * sr;
+    const double den = n * sxx - sx * sx;
     if (n < 3.0 || !(den > 1e-12 * n * n))
       return false;
-    scale = (n * srp - sr * sp) / den;
-    offset = (sp - scale * sr) / n;
-    const double sse = spp - 2.0 * scale * srp - 2.0 * offset * sp +
-                       scale * scale * srr + 2.0 * scale * offset * sr +
+    scale = (n * sxy - sx * sy) / den;
+    offset = (sy - scale * sx) / n;
+    const double sse = syy - 2.0 * scale * sxy - 2.0 * offset * sy +
+                       scale * scale * sxx + 2.0 * scale * offset * sx +
                        n * offset * offset;
     rms = std::sqrt (std::max (sse, 0.0) / n);
     return std::isfinite (scale) && std::isfinite (offset);

@@ -1,3 +1,5 @@
+#include "paired_sums.h"
+
 #include <mid/segmentation/photometric_verification.h>
 
 #include <Eigen/Geometry>
@@ -12,29 +14,16 @@ namespace mid {
 
 namespace {
 
-/** Running sums of grey-level pairs (a at a point's own pixel, b where it moved to). */
-struct GreyPairs
+/** Grey-level pairs: x at a point's own pixel, y where it moved to. */
+struct GreyPairs : detail::PairedSums
 {
-  double n = 0.0, sa = 0.0, sb = 0.0, saa = 0.0, sbb = 0.0, sab = 0.0;
-
-  void
-  add (double a, double b)
-  {
-    n += 1.0;
-    sa += a;
-    sb += b;
-    saa += a * a;
-    sbb += b * b;
-    sab += a * b;
-  }
-
   /** True if both sides vary by more than one grey level (standard deviation): below that, a
     * uniform surface (or a frame without colour) cannot tell one pose from another.
     */
   bool
   contrasted () const
   {
-    return n >= 2.0 && saa - sa * sa / n > n && sbb - sb * sb / n > n;
+    return n >= 2.0 && sxx - sx * sx / n > n && syy - sy * sy / n > n;
   }
 
   /** Normalized cross-correlation; 0 without contrast. */
@@ -43,9 +32,9 @@ struct GreyPairs
   {
     if (!contrasted())
       return 0.0;
-    const double va = saa - sa * sa / n, vb = sbb - sb * sb / n,
-                 cab = sab - sa * sb / n;
-    return cab / std::sqrt (va * vb);
+    const double vx = sxx - sx * sx / n, vy = syy - sy * sy / n,
+                 cxy = sxy - sx * sy / n;
+    return cxy / std::sqrt (vx * vy);
   }
 };
 
