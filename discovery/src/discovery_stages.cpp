@@ -144,72 +144,6 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
   return true;
 }
 
-void
-markInstances (const KeypointCloud& keypoints,
-               const ObjectModels& models,
-               float margin,
-               std::vector<bool>& taken);
-
-/** Look for more instances of each model from single matches
-  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
-  * the frame, its grey levels and the image keypoints are known.
-  */
-bool
-searchGuidedInstances (const DiscoveryParameters& p,
-                       const KeypointSurface& surface,
-                       DiscoveryResult& result)
-{
-  if (!p.guided_search || !surface.organized || !surface.intensity ||
-      result.image_keypoints.size() != result.keypoints->size() ||
-      result.models.empty())
-    return true;
-  if (!surface.pinhole) {
-    if (!p.verify_clusters) // the verification has said so otherwise
-      PCL_WARN (
-          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
-          "(not in its camera's coordinates?): no guided instance search.\n");
-    return true;
-  }
-  GuidedInstanceSearch search;
-  search.setInputKeypoints (result.keypoints);
-  search.setInputDescriptors (result.descriptors);
-  search.setImageKeypoints (result.image_keypoints);
-  search.setKeypointSurface (surface);
-  search.setSeedDescriptorDistance (p.guided_seed_distance);
-  search.setGuidedDescriptorDistance (p.guided_descriptor_distance);
-  search.setInlierThreshold (p.inlier_threshold);
-  search.setMinInliers (p.guided_min_inliers);
-  search.setMinCorrelation (p.guided_min_correlation);
-  search.setCorrelationRadius (p.verification_radius);
-  search.setDepthTolerance (p.verification_depth_tolerance);
-  search.setMaxHypotheses (p.guided_hypotheses);
-  for (auto& model : result.models) {
-    std::vector<bool> taken (result.keypoints->size(), false);
-    markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
-    pcl::Indices candidates;
-    ModelInstances copies;
-    for (std::size_t k = 0; k < taken.size(); ++k)
-      if (!taken[k])
-        candidates.push_back (static_cast<pcl::index_t> (k));
-    for (const auto& other : result.models)
-      copies.insert (copies.end(), other.instances.begin(), other.instances.end());
-    search.setCandidates (candidates);
-    search.setFoundInstances (copies);
-    ModelInstances found;
-    if (!search.search (model, found))
-      return false;
-    for (const auto& instance : found)
-      addInstance (model,
-                   instance,
-                   *result.descriptors,
-                   p.duplicate_angle,
-                   p.duplicate_distance);
-    if (!found.empty())
-      refineModel (model, *result.keypoints, p.refinement_iterations);
-  }
-  return true;
-}
-
 /** Ours: the PPF triplet rejector, then DBSCAN in transformation space (`surface` lets it
   * orient anchorless half turns; unset when its cloud is null).
   */
@@ -370,6 +304,66 @@ markInstances (const KeypointCloud& keypoints,
           taken[k] = true;
     }
   }
+}
+
+/** Look for more instances of each model from single matches
+  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
+  * the frame, its grey levels and the image keypoints are known.
+  */
+bool
+searchGuidedInstances (const DiscoveryParameters& p,
+                       const KeypointSurface& surface,
+                       DiscoveryResult& result)
+{
+  if (!p.guided_search || !surface.organized || !surface.intensity ||
+      result.image_keypoints.size() != result.keypoints->size() ||
+      result.models.empty())
+    return true;
+  if (!surface.pinhole) {
+    if (!p.verify_clusters) // the verification has said so otherwise
+      PCL_WARN (
+          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+          "(not in its camera's coordinates?): no guided instance search.\n");
+    return true;
+  }
+  GuidedInstanceSearch search;
+  search.setInputKeypoints (result.keypoints);
+  search.setInputDescriptors (result.descriptors);
+  search.setImageKeypoints (result.image_keypoints);
+  search.setKeypointSurface (surface);
+  search.setSeedDescriptorDistance (p.guided_seed_distance);
+  search.setGuidedDescriptorDistance (p.guided_descriptor_distance);
+  search.setInlierThreshold (p.inlier_threshold);
+  search.setMinInliers (p.guided_min_inliers);
+  search.setMinCorrelation (p.guided_min_correlation);
+  search.setCorrelationRadius (p.verification_radius);
+  search.setDepthTolerance (p.verification_depth_tolerance);
+  search.setMaxHypotheses (p.guided_hypotheses);
+  for (auto& model : result.models) {
+    std::vector<bool> taken (result.keypoints->size(), false);
+    markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
+    pcl::Indices candidates;
+    ModelInstances copies;
+    for (std::size_t k = 0; k < taken.size(); ++k)
+      if (!taken[k])
+        candidates.push_back (static_cast<pcl::index_t> (k));
+    for (const auto& other : result.models)
+      copies.insert (copies.end(), other.instances.begin(), other.instances.end());
+    search.setCandidates (candidates);
+    search.setFoundInstances (copies);
+    ModelInstances found;
+    if (!search.search (model, found))
+      return false;
+    for (const auto& instance : found)
+      addInstance (model,
+                   instance,
+                   *result.descriptors,
+                   p.duplicate_angle,
+                   p.duplicate_distance);
+    if (!found.empty())
+      refineModel (model, *result.keypoints, p.refinement_iterations);
+  }
+  return true;
 }
 
 /** The keypoints of the frame that no instance observes and that lie farther than

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -373,7 +374,10 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
     seeds.resize (max_hypotheses_);
 
   PhotometricVerification verification;
-  verification.setKeypointSurface (surface_);
+  KeypointSurface projected =
+      surface_; // the projection resolved once, not fitted again
+  projected.pinhole = std::make_shared<const FramePinhole> (pinhole_);
+  verification.setKeypointSurface (projected);
   verification.setRadius (correlation_radius_);
   verification.setDepthTolerance (depth_tolerance_);
   const LandmarkBox box = computeLandmarkBox (model);
