@@ -139,6 +139,9 @@ printHelp (const char* program)
   line ("-guided_hypotheses N",
         "guided search: seed matches tried per model",
         static_cast<double> (d.guided_hypotheses));
+  line ("-split_corr C",
+        "instances of one model alike at this grey-level correlation, each way",
+        static_cast<double> (d.split_min_correlation));
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -173,6 +176,10 @@ printHelp (const char* program)
               "(the\n");
   print_info ("                      paper's behaviour)\n");
   print_info (
+      "  -split              split a model whose instances fall into groups that "
+      "do not\n");
+  print_info ("                      look alike (off by default, as in the paper)\n");
+  print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
   print_info (
@@ -202,6 +209,8 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_leftovers", 0},
                                       {"-no_verification", 0},
                                       {"-no_guided", 0},
+                                      {"-split", 0},
+                                      {"-split_corr", 1},
                                       {"-guided_seed_dist", 1},
                                       {"-guided_desc_dist", 1},
                                       {"-guided_inliers", 1},
@@ -283,6 +292,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
+  p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -317,6 +327,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&
       parseNumber (argc, argv, "-guided_corr", p.guided_min_correlation) &&
       parseNumber (argc, argv, "-guided_hypotheses", p.guided_hypotheses) &&
+      parseNumber (argc, argv, "-split_corr", p.split_min_correlation) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

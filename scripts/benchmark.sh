@@ -21,6 +21,8 @@
 #                               hough (pcl::Hough3DGrouping); with more than one, the report
 #                               also puts them side by side (scripts/compare_peers.sh)
 #   MID_BENCHMARK_KEEP_DATASET  1: reuse OUT/dataset when it exists (0)
+#   MID_DISCOVERY_OPTIONS       more pcl_multi_instance_discovery options for every method
+#                               (none), e.g. -split
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -91,6 +93,7 @@ fi
 folders=()
 for method in $METHODS; do
   OPTIONS=$(method_options "$method")
+  OPTIONS="$OPTIONS${MID_DISCOVERY_OPTIONS:+${OPTIONS:+ }$MID_DISCOVERY_OPTIONS}"
   RESULTS=$OUT/results/$method
   [ "$(echo $METHODS)" = triplets ] && RESULTS=$OUT/results
   export OPTIONS RESULTS

@@ -181,6 +181,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "guided_hypotheses",
              static_cast<double> (p.guided_hypotheses),
              ">= 1");
+  c.require (p.split_min_correlation >= -1.0f && p.split_min_correlation <= 1.0f,
+             "split_min_correlation",
+             static_cast<double> (p.split_min_correlation),
+             "in [-1, 1]");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -10,6 +10,7 @@
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
 #include <mid/registration/region_model_merger.h>
+#include <mid/segmentation/appearance_model_splitter.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/guided_instance_search.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -190,6 +191,22 @@ groupWithTriplets (const DiscoveryParameters& p,
   return true;
 }
 
+/** The photometric verification on `surface` with the pipeline's radius and depth tolerance
+  * and the given minimum correlation.
+  */
+PhotometricVerification
+makeVerification (const DiscoveryParameters& p,
+                  const KeypointSurface& surface,
+                  float min_correlation)
+{
+  PhotometricVerification verification;
+  verification.setKeypointSurface (surface);
+  verification.setRadius (p.verification_radius);
+  verification.setDepthTolerance (p.verification_depth_tolerance);
+  verification.setMinCorrelation (min_correlation);
+  return verification;
+}
+
 /** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
   * the frame and its grey levels are known and a pinhole camera fits the frame.
   */
@@ -203,11 +220,8 @@ verifyClusters (const DiscoveryParameters& p,
   result.rejected_clusters = 0;
   if (p.verify_clusters && surface.organized && surface.intensity &&
       !clusters.empty()) {
-    PhotometricVerification verification;
-    verification.setKeypointSurface (surface);
-    verification.setRadius (p.verification_radius);
-    verification.setDepthTolerance (p.verification_depth_tolerance);
-    verification.setMinCorrelation (p.min_photometric_correlation);
+    const PhotometricVerification verification =
+        makeVerification (p, surface, p.min_photometric_correlation);
     TripletClusters verified;
     if (!verification.hasProjection())
       PCL_WARN (
@@ -363,6 +377,34 @@ searchGuidedInstances (const DiscoveryParameters& p,
     if (!found.empty())
       refineModel (model, *result.keypoints, p.refinement_iterations);
   }
+  return true;
+}
+
+/** Split each model whose instances fall into groups that do not look alike
+  * (DiscoveryParameters::split_by_appearance), when the frame, its grey levels and the image
+  * keypoints are known; each split part is refined.
+  */
+bool
+splitByAppearance (const DiscoveryParameters& p,
+                   const KeypointSurface& surface,
+                   DiscoveryResult& result)
+{
+  if (!p.split_by_appearance || !surface.organized || !surface.intensity ||
+      !surface.pinhole || result.image_keypoints.size() != result.keypoints->size())
+    return true;
+  AppearanceModelSplitter splitter;
+  splitter.setVerification (makeVerification (p, surface, p.split_min_correlation));
+  ObjectModels models, parts;
+  for (const auto& model : result.models) {
+    if (!splitter.split (model, parts))
+      return false;
+    for (auto& part : parts) {
+      if (parts.size() > 1)
+        refineModel (part, *result.keypoints, p.refinement_iterations);
+      models.push_back (std::move (part));
+    }
+  }
+  result.models.swap (models);
   return true;
 }
 
@@ -540,6 +582,8 @@ runStages (const DiscoveryParameters& p,
     return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
+  if (!splitByAppearance (p, keypoint_surface, result))
+    return false;
   result.timing_ms.emplace_back ("detection", watch.getTime());
 
   watch.reset();
@@ -558,10 +602,12 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                        const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (p,
-                 result,
-                 surface,
-                 frameSurface (organized, p.verify_clusters || p.guided_search)))
+  if (runStages (
+          p,
+          result,
+          surface,
+          frameSurface (organized,
+                        p.verify_clusters || p.guided_search || p.split_by_appearance)))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();

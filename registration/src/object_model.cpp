@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 
 namespace mid {
 
@@ -57,6 +58,35 @@ posesCoincide (const Eigen::Matrix4f& a,
   const Eigen::Vector3f pb =
       b.topLeftCorner<3, 3>() * center + b.topRightCorner<3, 1>();
   return angle < max_angle && (pa - pb).norm() < max_distance;
+}
+
+void
+extractModelPart (const ObjectModel& model,
+                  const std::vector<std::size_t>& instances,
+                  ObjectModel& part)
+{
+  std::vector<int> renumbered (model.landmarks.size(), -1);
+  part = ObjectModel();
+  for (const std::size_t i : instances) {
+    ModelInstance instance = model.instances[i];
+    for (int& l : instance.landmarks) {
+      int& to = renumbered[static_cast<std::size_t> (l)];
+      if (to < 0) {
+        to = static_cast<int> (part.landmarks.size());
+        part.landmarks.push_back (model.landmarks[static_cast<std::size_t> (l)]);
+      }
+      l = to;
+    }
+    part.instances.push_back (std::move (instance));
+  }
+  for (std::size_t d = 0; d < model.descriptors.size(); ++d) {
+    const int to = renumbered[static_cast<std::size_t> (model.descriptor_landmarks[d])];
+    if (to < 0)
+      continue;
+    part.descriptors.push_back (model.descriptors[d]);
+    part.descriptor_landmarks.push_back (to);
+  }
+  updateModelDiameter (part);
 }
 
 void

@@ -1,91 +1,35 @@
-#include "rendered_objects_scene.h"
+#include "rendered_keypoints.h"
 
-#include <mid/features/sift_keypoint_extractor.h>
 #include <mid/segmentation/guided_instance_search.h>
-#include <mid/segmentation/photometric_verification.h>
 
 #include <gtest/gtest.h>
-#include <pcl/common/io.h>
 
 #include <set>
 
 namespace {
 
 using mid::test::boxPose;
-
-const char* const kApple = "tropicana_apple_juice_front.jpg";
-const char* const kSoy = "alpro_soya_front.jpg";
-const Eigen::Vector3d kSize{0.12, 0.09, 0.04};
+using mid::test::kApplePrint;
+using mid::test::kPrintedBoxSize;
+using mid::test::kSoyPrint;
 
 /** Three copies of one print, each turned its own way in the image (box 1 also tilted), and a
   * box of another print; every keypoint looked up in the truth; a model made from the truth
   * of box 0 (its frame is the box's own), with one instance there.
   */
-struct FourBoxes
+struct FourBoxes : mid::test::RenderedKeypoints
 {
-  mid::test::RenderedObjectsScene scene;
-  mid::KeypointCloud::Ptr keypoints = pcl::make_shared<mid::KeypointCloud>();
-  mid::SIFTDescriptorCloud::Ptr descriptors =
-      pcl::make_shared<mid::SIFTDescriptorCloud>();
-  mid::ImageKeypoints image_keypoints;
-  mid::KeypointSurface surface;
-  std::vector<int> box_of; ///< per keypoint, the box it lies on (-1: the table)
   mid::ObjectModel model;
 
   FourBoxes()
+  : RenderedKeypoints (mid::test::renderBoxes (
+        {{kApplePrint, kPrintedBoxSize, boxPose (-0.12, -0.07, 0.8, 15.0)},
+         {kApplePrint, kPrintedBoxSize, boxPose (0.11, -0.06, 0.84, 200.0, 20.0)},
+         {kApplePrint, kPrintedBoxSize, boxPose (-0.1, 0.1, 0.82, -70.0)},
+         {kSoyPrint, kPrintedBoxSize, boxPose (0.12, 0.11, 0.81, 30.0)}},
+        0.95))
   {
-    scene = mid::test::renderBoxes (
-        {{kApple, kSize, boxPose (-0.12, -0.07, 0.8, 15.0)},
-         {kApple, kSize, boxPose (0.11, -0.06, 0.84, 200.0, 20.0)},
-         {kApple, kSize, boxPose (-0.1, 0.1, 0.82, -70.0)},
-         {kSoy, kSize, boxPose (0.12, 0.11, 0.81, 30.0)}},
-        0.95);
-    mid::SIFTKeypointExtractor<pcl::PointXYZRGBA> extractor;
-    extractor.setInputCloud (scene.cloud);
-    EXPECT_TRUE (extractor.compute (*keypoints, *descriptors));
-    image_keypoints = extractor.getImageKeypoints();
-    auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-    pcl::copyPointCloud (*scene.cloud, *points);
-    pcl::PointCloud<pcl::PointXYZRGB> colour;
-    pcl::copyPointCloud (*scene.cloud, colour);
-    surface.organized = points;
-    surface.intensity =
-        std::make_shared<const std::vector<float>> (mid::greyLevels (colour));
-    for (const auto& k : image_keypoints) {
-      surface.keypoint_pixels.push_back (k.pixel_index);
-      box_of.push_back (mid::test::boxUnderKeypoints (scene, {{k.u, k.v}}));
-    }
-
-    const Eigen::Matrix4f pose = scene.boxes[0].pose.matrix().cast<float>();
-    const Eigen::Affine3f to_model (pose.inverse());
-    mid::ModelInstance instance;
-    instance.pose = pose;
-    for (std::size_t k = 0; k < keypoints->size(); ++k) {
-      if (box_of[k] != 0)
-        continue;
-      pcl::PointNormal landmark = (*keypoints)[k];
-      landmark.getVector3fMap() = to_model * (*keypoints)[k].getVector3fMap();
-      landmark.getNormalVector3fMap() =
-          to_model.linear() * (*keypoints)[k].getNormalVector3fMap();
-      instance.keypoints.push_back (static_cast<pcl::index_t> (k));
-      instance.landmarks.push_back (static_cast<int> (model.landmarks.size()));
-      model.descriptor_landmarks.push_back (static_cast<int> (model.landmarks.size()));
-      model.landmarks.push_back (landmark);
-      model.descriptors.push_back ((*descriptors)[k]);
-    }
-    model.instances.push_back (instance);
-    mid::updateModelDiameter (model);
-  }
-
-  /** The keypoints on the given boxes. */
-  pcl::Indices
-  on (const std::set<int>& boxes) const
-  {
-    pcl::Indices indices;
-    for (std::size_t k = 0; k < box_of.size(); ++k)
-      if (boxes.count (box_of[k]) > 0)
-        indices.push_back (static_cast<pcl::index_t> (k));
-    return indices;
+    addTruthInstance (0, model);
   }
 
   /** A search over every keypoint off box 0. */
@@ -99,16 +43,6 @@ struct FourBoxes
     search.setKeypointSurface (surface);
     search.setCandidates (on ({-1, 1, 2, 3}));
     return search;
-  }
-
-  /** The box all of an instance's keypoints lie on, or -1. */
-  int
-  boxOf (const mid::ModelInstance& instance) const
-  {
-    std::set<int> boxes;
-    for (const auto k : instance.keypoints)
-      boxes.insert (box_of[static_cast<std::size_t> (k)]);
-    return boxes.size() == 1 ? *boxes.begin() : -1;
   }
 };
 
@@ -129,7 +63,7 @@ TEST (GuidedInstanceSearch, FindsTheOtherCopiesAtTheirTruePoses)
   ASSERT_TRUE (boxes.search().search (boxes.model, found));
   std::set<int> copies;
   for (const auto& instance : found) {
-    const int box = boxes.boxOf (instance);
+    const int box = boxes.boxOf (instance.keypoints);
     ASSERT_TRUE (box == 1 || box == 2) << "an instance off the copies: box " << box;
     EXPECT_TRUE (copies.insert (box).second) << "box " << box << " found twice";
     EXPECT_GE (instance.keypoints.size(), 6u);
@@ -163,7 +97,7 @@ TEST (GuidedInstanceSearch, RefusesACopyFoundAlready)
   mid::ModelInstances found;
   ASSERT_TRUE (search.search (boxes.model, found));
   ASSERT_EQ (found.size(), 1u);
-  EXPECT_EQ (boxes.boxOf (found.front()), 2);
+  EXPECT_EQ (boxes.boxOf (found.front().keypoints), 2);
 }
 
 TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)

@@ -1,4 +1,4 @@
-#include "rendered_objects_scene.h"
+#include "rendered_keypoints.h"
 
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -14,8 +14,8 @@ namespace {
 using mid::test::boxPose;
 using mid::test::BoxSpec;
 
-const char* const kApple = "tropicana_apple_juice_front.jpg";
-const char* const kSoy = "alpro_soya_front.jpg";
+const char* const kApple = mid::test::kApplePrint;
+const char* const kSoy = mid::test::kSoyPrint;
 
 /** Three boxes of one size in front of a table: copies 0 and 1 of one print, box 2 of another
   * print, each turned its own way.

@@ -213,6 +213,21 @@ struct DiscoveryParameters
   float guided_min_correlation = 0.6f;
   std::size_t guided_hypotheses = 500;
   ///@}
+  /** \brief After the detection, in each round, split a model whose instances fall into
+    * groups that do not look alike (not in the paper; AppearanceModelSplitter): two instances
+    * are alike when the grey levels around their keypoints, moved by their relative pose,
+    * correlate at split_min_correlation (in [-1, 1]) or more each way (over
+    * verification_radius, with verification_depth_tolerance). Needs the organized colour
+    * frame and the image keypoints (MultiInstanceDiscovery passes both). Off by default: on
+    * the development frames it halves the pairs of one object whose relative pose is off by
+    * more than 45 deg (111 -> 51 of about 800, seed 3), but the parts it makes of one product
+    * are second models, which the paper's rules count as false positives (instance F1 0.786
+    * -> 0.766; doc/benchmark.md, session 19).
+    */
+  ///@{
+  bool split_by_appearance = false;
+  float split_min_correlation = 0.4f;
+  ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).
     */

@@ -96,6 +96,19 @@ posesCoincide (const Eigen::Matrix4f& a,
                float max_angle,
                float max_distance);
 
+/** \brief The part of a model that some of its instances see: those instances, the landmarks
+  * they observe (renumbered in their order) and those landmarks' descriptors, in the same
+  * model frame.
+  * \param[in] model the whole model
+  * \param[in] instances indices into model.instances of the instances to keep, in the order
+  * the part lists them; each must be valid and observe valid landmarks (not checked)
+  * \param[out] part the part, its diameter recomputed (updateModelDiameter())
+  */
+void
+extractModelPart (const ObjectModel& model,
+                  const std::vector<std::size_t>& instances,
+                  ObjectModel& part);
+
 /** \brief Recompute a model's diameter from its landmarks (0 for fewer than two).
   * \param[in,out] model its landmarks are read, its diameter written
   */

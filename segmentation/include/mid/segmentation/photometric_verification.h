@@ -140,11 +140,13 @@ public:
     return has_pinhole_;
   }
 
-private:
-  /** \brief What is wrong with the parameters or the keypoint surface; empty if nothing. */
+  /** \brief What is wrong with the parameters or the keypoint surface, as filter() would
+    * report it; empty if nothing (for the steps that compare surfaces with this class).
+    */
   std::string
   inputProblem () const;
 
+private:
   KeypointSurface surface_;
   FramePinhole pinhole_;
   bool has_pinhole_ = false;
