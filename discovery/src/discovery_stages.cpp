@@ -110,6 +110,20 @@ mergeThroughRegions (const DiscoveryParameters& p, DiscoveryResult& result)
   return merger.merge (result.models);
 }
 
+/** Add the instances found of `model` to it (addInstance()), and refine it if there were any. */
+void
+addFoundInstances (const DiscoveryParameters& p,
+                   const DiscoveryResult& result,
+                   const ModelInstances& found,
+                   ObjectModel& model)
+{
+  for (const auto& instance : found)
+    addInstance (
+        model, instance, *result.descriptors, p.duplicate_angle, p.duplicate_distance);
+  if (!found.empty())
+    refineModel (model, *result.keypoints, p.refinement_iterations);
+}
+
 /** Look for each model's instances among the keypoints no model uses yet. */
 bool
 detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result)
@@ -131,16 +145,9 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
     ModelInstances found;
     if (!detector.detect (found))
       return false;
-    for (const auto& instance : found) {
-      addInstance (model,
-                   instance,
-                   *result.descriptors,
-                   p.duplicate_angle,
-                   p.duplicate_distance);
+    for (const auto& instance : found)
       used.insert (instance.keypoints.begin(), instance.keypoints.end());
-    }
-    if (!found.empty())
-      refineModel (model, *result.keypoints, p.refinement_iterations);
+    addFoundInstances (p, result, found, model);
   }
   return true;
 }
@@ -368,14 +375,7 @@ searchGuidedInstances (const DiscoveryParameters& p,
     ModelInstances found;
     if (!search.search (model, found))
       return false;
-    for (const auto& instance : found)
-      addInstance (model,
-                   instance,
-                   *result.descriptors,
-                   p.duplicate_angle,
-                   p.duplicate_distance);
-    if (!found.empty())
-      refineModel (model, *result.keypoints, p.refinement_iterations);
+    addFoundInstances (p, result, found, model);
   }
   return true;
 }
