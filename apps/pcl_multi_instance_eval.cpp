@@ -56,7 +56,7 @@ printHelp (const char* program)
   print_info ("                the reference of the grouping time ratio\n");
   print_info ("  -names A,B    the methods' names in the tables (default: the folders' "
               "names)\n");
-  print_info ("  -report FILE  also write the report (markdown table) to FILE\n");
+  print_info ("  -report FILE  also write the report (markdown tables) to FILE\n");
   print_info ("  -min_inside F share of an instance's keypoints that must lie on the "
               "annotated\n");
   print_info ("                instance (default 0.9, the paper's)\n");
@@ -330,6 +330,9 @@ main (int argc, char** argv)
     if (methods.size() > 1)
       report += "\n" + method.name + ":\n\n";
     report += mid::evaluation::formatReport (method.scenarios);
+    report += "\nRelative poses of the correctly found instances of one object (pairs "
+              "whose rotation is wrong by more than 10 and 45 deg):\n\n" +
+              mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
     if (shared_cell > 0.0f)
       report +=
           "\nRecall against the surface each instance shares with another copy of "

@@ -214,6 +214,18 @@ makeVerification (const DiscoveryParameters& p,
   return verification;
 }
 
+/** Warn once per frame that no pinhole camera fits the organized frame, so that the stage
+  * `skipped` (e.g. "the clusters are not verified") does not run. Only the first stage that
+  * needs the camera says so.
+  */
+void
+warnNoPinhole (const char* skipped)
+{
+  PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+            "(not in its camera's coordinates?): %s.\n",
+            skipped);
+}
+
 /** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
   * the frame and its grey levels are known and a pinhole camera fits the frame.
   */
@@ -231,9 +243,7 @@ verifyClusters (const DiscoveryParameters& p,
         makeVerification (p, surface, p.min_photometric_correlation);
     TripletClusters verified;
     if (!verification.hasProjection())
-      PCL_WARN (
-          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
-          "(not in its camera's coordinates?): the clusters are not verified.\n");
+      warnNoPinhole ("the clusters are not verified");
     else if (!verification.filter (clusters, verified))
       return false;
     else {
@@ -342,9 +352,7 @@ searchGuidedInstances (const DiscoveryParameters& p,
     return true;
   if (!surface.pinhole) {
     if (!p.verify_clusters) // the verification has said so otherwise
-      PCL_WARN (
-          "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
-          "(not in its camera's coordinates?): no guided instance search.\n");
+      warnNoPinhole ("no guided instance search");
     return true;
   }
   GuidedInstanceSearch search;
@@ -390,8 +398,15 @@ splitByAppearance (const DiscoveryParameters& p,
                    DiscoveryResult& result)
 {
   if (!p.split_by_appearance || !surface.organized || !surface.intensity ||
-      !surface.pinhole || result.image_keypoints.size() != result.keypoints->size())
+      result.image_keypoints.size() != result.keypoints->size() ||
+      result.models.empty())
     return true;
+  if (!surface.pinhole) {
+    // The verification or the guided search has said so otherwise.
+    if (!p.verify_clusters && !p.guided_search)
+      warnNoPinhole ("no appearance split");
+    return true;
+  }
   AppearanceModelSplitter splitter;
   splitter.setVerification (makeVerification (p, surface, p.split_min_correlation));
   ObjectModels models, parts;

@@ -131,6 +131,36 @@ sharedSurfaceRow (const std::string& name, const ScoreSummary& s, int min_shared
   return line + tail;
 }
 
+std::string
+poseErrorRow (const std::string& name,
+              const ScoreSummary& s,
+              const std::vector<double>& thresholds_deg)
+{
+  const std::vector<double>& errors = s.rotation_errors_deg;
+  char line[96];
+  std::snprintf (line,
+                 sizeof (line),
+                 "| %-10s | %5zu | %6.2f | %6.2f",
+                 name.c_str(),
+                 errors.size(),
+                 median (errors),
+                 median (s.translation_errors_mm));
+  std::string text = line;
+  for (const double threshold : thresholds_deg) {
+    const auto above = std::count_if (
+        errors.begin(), errors.end(), [threshold] (double e) { return e > threshold; });
+    std::snprintf (line,
+                   sizeof (line),
+                   " | %4td (%5.3f)",
+                   above,
+                   errors.empty() ? 0.0
+                                  : static_cast<double> (above) /
+                                        static_cast<double> (errors.size()));
+    text += line;
+  }
+  return text + " |\n";
+}
+
 } // namespace
 
 void
@@ -221,6 +251,28 @@ formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
     total.add (summary);
   }
   return report + sharedSurfaceRow ("total", total, min_shared_cells);
+}
+
+std::string
+formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
+                       const std::vector<double>& thresholds_deg)
+{
+  std::string report = "| scenario   | instance pairs | rot. err. deg (median) | transl. "
+                       "err. mm (median)";
+  std::string rule = "|---|---|---|---";
+  for (const double threshold : thresholds_deg) {
+    char column[48];
+    std::snprintf (column, sizeof (column), " | rot. err. > %g deg", threshold);
+    report += column;
+    rule += "|---";
+  }
+  report += " |\n" + rule + "|\n";
+  ScoreSummary total;
+  for (const auto& [name, summary] : scenarios) {
+    report += poseErrorRow (name, summary, thresholds_deg);
+    total.add (summary);
+  }
+  return report + poseErrorRow ("total", total, thresholds_deg);
 }
 
 std::string

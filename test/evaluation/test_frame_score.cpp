@@ -242,3 +242,44 @@ TEST (ScoreSummary, ReportsRecallAgainstTheSharedSurface)
   EXPECT_NE (report.find ("| total      |   1 /   2"), std::string::npos) << report;
   EXPECT_NE (report.find ("R (sharing >= 10)"), std::string::npos) << report;
 }
+
+TEST (ScoreSummary, CountsThePairsWhoseRotationIsWrongBeyondEachThreshold)
+{
+  // Three copies of one type; the second is found turned by 60 deg about its own origin, the
+  // others at their true poses: pairs (0, 1) and (1, 2) are 60 deg off, (0, 2) exact.
+  const auto f = frame ({{1, 0}, {1, 150}, {1, 300}});
+  Eigen::Matrix4f turn = Eigen::Matrix4f::Identity();
+  turn.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisf (static_cast<float> (M_PI / 3.0), Eigen::Vector3f::UnitX())
+          .toRotationMatrix();
+  DetectionResult r;
+  r.objects.push_back ({{instance (0, 20, 0, truePose (f, 0)),
+                         instance (150, 20, 0, truePose (f, 1) * turn),
+                         instance (300, 20, 0, truePose (f, 2))}});
+  mid::evaluation::ScoreSummary turned;
+  turned.add (mid::evaluation::scoreFrame (f, r), r);
+  ASSERT_EQ (turned.rotation_errors_deg.size(), 3u);
+  // A second scenario with one exact pair.
+  r.objects.front().instances.pop_back();
+  r.objects.front().instances[1].pose = truePose (f, 1);
+  mid::evaluation::ScoreSummary exact;
+  exact.add (mid::evaluation::scoreFrame (f, r), r);
+
+  const std::string report = mid::evaluation::formatPoseErrorReport (
+      {{"S_ez", turned}, {"rows", exact}}, {10.0, 45.0, 90.0});
+  EXPECT_NE (report.find ("rot. err. > 45 deg | rot. err. > 90 deg |"), std::string::npos)
+      << report;
+  // Median of {60, 0, 60} is 60 deg; two of three pairs beyond 10 and 45 deg, none beyond 90.
+  EXPECT_NE (report.find ("| S_ez       |     3 |  60.00 |"), std::string::npos) << report;
+  EXPECT_NE (report.find ("|    2 (0.667) |    2 (0.667) |    0 (0.000) |"),
+             std::string::npos)
+      << report;
+  EXPECT_NE (report.find ("| rows       |     1 |   0.00 |   0.00 |    0 (0.000) |"),
+             std::string::npos)
+      << report;
+  // The total: two of four pairs.
+  EXPECT_NE (report.find ("| total      |     4 |"), std::string::npos) << report;
+  EXPECT_NE (report.find ("|    2 (0.500) |    2 (0.500) |    0 (0.000) |"),
+             std::string::npos)
+      << report;
+}

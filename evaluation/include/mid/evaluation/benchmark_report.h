@@ -107,6 +107,21 @@ std::string
 formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
                            int min_shared_cells);
 
+/** \brief How many relative poses inside one object are wrong: per scenario and in total, the
+  * number of pairs of correctly found instances of one object (FrameScore::rotation_errors_deg),
+  * their median rotation and translation errors, and how many of them (count and share) have a
+  * rotation error above each threshold. The median alone hides an object glued from groups of
+  * copies that are right among themselves but turned against each other: every instance is
+  * correct by the paper's rules, yet the poses across the groups are wrong for picking.
+  * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
+  * \param[in] thresholds_deg the rotation errors (degrees) above which a pair is counted, one
+  * column each, e.g. {10, 45}
+  * \return a Markdown table, one line per scenario and one for the total
+  */
+std::string
+formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
+                       const std::vector<double>& thresholds_deg);
+
 /** \brief One method's scores per scenario, with the method's name (see formatComparison()). */
 struct MethodScores
 {
