@@ -30,6 +30,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/** How the surface each annotated instance shares with another copy is measured
+  * (mid::evaluation::measureSharedSurface()) and reported.
+  */
+struct SharedSurfaceSettings
+{
+  float cell = 0.01f;    ///< edge of the model-frame cubes, metres; 0 = no such table
+  float max_tilt = 2.0f; ///< largest transition tilt between two views of a shared cube
+  float min_contrast =
+      4.0f;          ///< mean local contrast of a textured cube; 0 = no texture test
+  int findable = 10; ///< shared cubes from which an instance counts as findable
+};
+
 void
 printHelp (const char* program)
 {
@@ -37,7 +49,8 @@ printHelp (const char* program)
               "2017 rules).\n\n");
   print_info ("Usage: %s DATASET_DIR RESULTS_DIR [RESULTS_DIR...] [-names A,B,...] "
               "[-report FILE]\n"
-              "          [-min_inside F] [-frames] [-shared_cell M] [-findable N]\n\n",
+              "          [-min_inside F] [-frames] [-shared_cell M] [-findable N]\n"
+              "          [-max_tilt T] [-min_contrast C]\n\n",
               program);
   print_info ("  DATASET_DIR   BOP scene folders (000000/, 000001/, ...) with "
               "scene_gt.json,\n");
@@ -87,6 +100,21 @@ printHelp (const char* program)
       "the two\n");
   print_info ("                views of it is at most T (default 2, where SIFT stops "
               "matching)\n");
+  print_info ("  -min_contrast C  and when both views show texture there: a mean local "
+              "contrast\n");
+  print_info ("                (grey-level standard deviation in 5 x 5 pixels) of C or "
+              "more\n");
+  print_info (
+      "                (default 4; 0 = plain surface counts too; needs rgb/)\n");
+}
+
+/** A number as printf's %g writes it. */
+std::string
+formatNumber (double value)
+{
+  char text[32];
+  std::snprintf (text, sizeof (text), "%g", value);
+  return text;
 }
 
 std::string
@@ -159,8 +187,7 @@ scoreMethod (const std::vector<fs::path>& scenes,
              const std::map<std::string, std::string>& scenario_of,
              const fs::path& results,
              double min_inside,
-             float shared_cell,
-             float max_tilt,
+             const SharedSurfaceSettings& surface,
              bool per_frame,
              std::map<std::string, mid::evaluation::ScoreSummary>& scenarios)
 {
@@ -168,8 +195,12 @@ scoreMethod (const std::vector<fs::path>& scenes,
   for (const auto& scene_path : scenes) {
     mid::evaluation::GroundTruthScene truth;
     if (!mid::evaluation::loadBopScene (scene_path.string(), truth) ||
-        (shared_cell > 0.0f && !mid::evaluation::measureSharedSurface (
-                                   scene_path.string(), shared_cell, max_tilt, truth)))
+        (surface.cell > 0.0f &&
+         !mid::evaluation::measureSharedSurface (scene_path.string(),
+                                                 surface.cell,
+                                                 surface.max_tilt,
+                                                 surface.min_contrast,
+                                                 truth)))
       return false;
     const std::string scene = scene_path.filename().string();
     const auto named = scenario_of.find (scene);
@@ -238,17 +269,18 @@ main (int argc, char** argv)
                                        {"-frames", 0},
                                        {"-shared_cell", 1},
                                        {"-findable", 1},
-                                       {"-max_tilt", 1}}))
+                                       {"-max_tilt", 1},
+                                       {"-min_contrast", 1}}))
     return 1;
   std::string report_path, names_list;
   double min_inside = 0.9;
-  float shared_cell = 0.01f, max_tilt = 2.0f;
-  int findable = 10;
+  SharedSurfaceSettings surface;
   pcl::console::parse_argument (argc, argv, "-report", report_path);
   if (!mid::apps::parseNumber (argc, argv, "-min_inside", min_inside) ||
-      !mid::apps::parseNumber (argc, argv, "-shared_cell", shared_cell) ||
-      !mid::apps::parseNumber (argc, argv, "-findable", findable) ||
-      !mid::apps::parseNumber (argc, argv, "-max_tilt", max_tilt))
+      !mid::apps::parseNumber (argc, argv, "-shared_cell", surface.cell) ||
+      !mid::apps::parseNumber (argc, argv, "-findable", surface.findable) ||
+      !mid::apps::parseNumber (argc, argv, "-max_tilt", surface.max_tilt) ||
+      !mid::apps::parseNumber (argc, argv, "-min_contrast", surface.min_contrast))
     return 1;
   pcl::console::parse_argument (argc, argv, "-names", names_list);
   const bool per_frame = pcl::console::find_switch (argc, argv, "-frames");
@@ -257,13 +289,15 @@ main (int argc, char** argv)
                  min_inside);
     return 1;
   }
-  if (!(shared_cell >= 0.0f) || findable < 0 || !(max_tilt >= 1.0f)) {
+  if (!(surface.cell >= 0.0f) || surface.findable < 0 || !(surface.max_tilt >= 1.0f) ||
+      !(surface.min_contrast >= 0.0f)) {
     print_error (
-        "Invalid parameter: -shared_cell is %g and -findable %d (neither may be "
-        "negative), -max_tilt %g (must be 1 or more).\n",
-        static_cast<double> (shared_cell),
-        findable,
-        static_cast<double> (max_tilt));
+        "Invalid parameter: -shared_cell is %g, -findable %d and -min_contrast %g "
+        "(none may be negative), -max_tilt %g (must be 1 or more).\n",
+        static_cast<double> (surface.cell),
+        surface.findable,
+        static_cast<double> (surface.min_contrast),
+        static_cast<double> (surface.max_tilt));
     return 1;
   }
   if (results.empty()) {
@@ -304,11 +338,20 @@ main (int argc, char** argv)
       std::all_of (scenes.begin(), scenes.end(), [] (const fs::path& s) {
         return fs::is_directory (s / "depth") && fs::exists (s / "scene_camera.json");
       });
-  if (shared_cell > 0.0f && !has_depth) {
+  if (surface.cell > 0.0f && !has_depth) {
     print_info (
         "Not every scene folder has depth/ and scene_camera.json: no shared-surface "
         "table.\n");
-    shared_cell = 0.0f;
+    surface.cell = 0.0f;
+  }
+  const bool has_colour =
+      std::all_of (scenes.begin(), scenes.end(), [] (const fs::path& s) {
+        return fs::is_directory (s / "rgb");
+      });
+  if (surface.cell > 0.0f && surface.min_contrast > 0.0f && !has_colour) {
+    print_info ("Not every scene folder has rgb/: the shared surface counts plain "
+                "surface too.\n");
+    surface.min_contrast = 0.0f;
   }
   std::vector<mid::evaluation::MethodScores> methods;
   for (std::size_t m = 0; m < results.size(); ++m) {
@@ -318,8 +361,7 @@ main (int argc, char** argv)
                       scenario_of,
                       results[m],
                       min_inside,
-                      shared_cell,
-                      max_tilt,
+                      surface,
                       per_frame,
                       method.scenarios))
       return 1;
@@ -333,13 +375,22 @@ main (int argc, char** argv)
     report += "\nRelative poses of the correctly found instances of one object (pairs "
               "whose rotation is wrong by more than 10 and 45 deg):\n\n" +
               mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
-    if (shared_cell > 0.0f)
+    if (surface.cell > 0.0f)
       report +=
-          "\nRecall against the surface each instance shares with another copy of "
-          "its type (cubes of " +
-          std::to_string (static_cast<int> (std::lround (shared_cell * 1000.0f))) +
-          " mm in the model frame):\n\n" +
-          mid::evaluation::formatSharedSurfaceReport (method.scenarios, findable);
+          "\nRecall against the " +
+          std::string (surface.min_contrast > 0.0f ? "textured " : "") +
+          "surface each instance shares with another copy of its type (cubes "
+          "of " +
+          std::to_string (static_cast<int> (std::lround (surface.cell * 1000.0f))) +
+          " mm in the model frame" +
+          (surface.min_contrast > 0.0f
+               ? ", local contrast " +
+                     formatNumber (static_cast<double> (surface.min_contrast)) +
+                     " grey levels or more in both views"
+               : std::string()) +
+          "):\n\n" +
+          mid::evaluation::formatSharedSurfaceReport (method.scenarios,
+                                                      surface.findable);
   }
   if (methods.size() > 1)
     report += "\nSide by side (time ratio: " + methods.front().name +

@@ -257,8 +257,9 @@ std::string
 formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
                        const std::vector<double>& thresholds_deg)
 {
-  std::string report = "| scenario   | instance pairs | rot. err. deg (median) | transl. "
-                       "err. mm (median)";
+  std::string report =
+      "| scenario   | instance pairs | rot. err. deg (median) | transl. "
+      "err. mm (median)";
   std::string rule = "|---|---|---|---";
   for (const double threshold : thresholds_deg) {
     char column[48];

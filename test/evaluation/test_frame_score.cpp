@@ -267,10 +267,12 @@ TEST (ScoreSummary, CountsThePairsWhoseRotationIsWrongBeyondEachThreshold)
 
   const std::string report = mid::evaluation::formatPoseErrorReport (
       {{"S_ez", turned}, {"rows", exact}}, {10.0, 45.0, 90.0});
-  EXPECT_NE (report.find ("rot. err. > 45 deg | rot. err. > 90 deg |"), std::string::npos)
+  EXPECT_NE (report.find ("rot. err. > 45 deg | rot. err. > 90 deg |"),
+             std::string::npos)
       << report;
   // Median of {60, 0, 60} is 60 deg; two of three pairs beyond 10 and 45 deg, none beyond 90.
-  EXPECT_NE (report.find ("| S_ez       |     3 |  60.00 |"), std::string::npos) << report;
+  EXPECT_NE (report.find ("| S_ez       |     3 |  60.00 |"), std::string::npos)
+      << report;
   EXPECT_NE (report.find ("|    2 (0.667) |    2 (0.667) |    0 (0.000) |"),
              std::string::npos)
       << report;
