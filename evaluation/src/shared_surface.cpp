@@ -159,8 +159,7 @@ windowOnInstance (const GroundTruthFrame& frame, std::size_t k, int x, int y)
 /** The sorted cubes of the model frame that instance k's visible pixels fall in
   * (pointsAndNormals()). With a contrast image (localContrast()), a cube is textured where the
   * mean contrast of its pixels whose window is on the instance (windowOnInstance()) reaches
-  * min_contrast; without,
-  * every cube is.
+  * min_contrast; without, every cube is.
   */
 std::vector<SeenCell>
 visibleCells (const GroundTruthFrame& frame,
