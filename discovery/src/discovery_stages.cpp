@@ -214,18 +214,6 @@ makeVerification (const DiscoveryParameters& p,
   return verification;
 }
 
-/** Warn once per frame that no pinhole camera fits the organized frame, so that the stage
-  * `skipped` (e.g. "the clusters are not verified") does not run. Only the first stage that
-  * needs the camera says so.
-  */
-void
-warnNoPinhole (const char* skipped)
-{
-  PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
-            "(not in its camera's coordinates?): %s.\n",
-            skipped);
-}
-
 /** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
   * the frame and its grey levels are known and a pinhole camera fits the frame.
   */
@@ -237,19 +225,15 @@ verifyClusters (const DiscoveryParameters& p,
 {
   pcl::StopWatch watch;
   result.rejected_clusters = 0;
-  if (p.verify_clusters && surface.organized && surface.intensity &&
+  // Without a pinhole camera (frameSurface() has warned) the clusters are not verified.
+  if (p.verify_clusters && surface.organized && surface.intensity && surface.pinhole &&
       !clusters.empty()) {
-    const PhotometricVerification verification =
-        makeVerification (p, surface, p.min_photometric_correlation);
     TripletClusters verified;
-    if (!verification.hasProjection())
-      warnNoPinhole ("the clusters are not verified");
-    else if (!verification.filter (clusters, verified))
+    if (!makeVerification (p, surface, p.min_photometric_correlation)
+             .filter (clusters, verified))
       return false;
-    else {
-      result.rejected_clusters = clusters.size() - verified.size();
-      clusters.swap (verified);
-    }
+    result.rejected_clusters = clusters.size() - verified.size();
+    clusters.swap (verified);
   }
   result.timing_ms.emplace_back ("verification", watch.getTime());
   return true;
@@ -347,14 +331,9 @@ searchGuidedInstances (const DiscoveryParameters& p,
                        DiscoveryResult& result)
 {
   if (!p.guided_search || !surface.organized || !surface.intensity ||
-      result.image_keypoints.size() != result.keypoints->size() ||
+      !surface.pinhole || result.image_keypoints.size() != result.keypoints->size() ||
       result.models.empty())
     return true;
-  if (!surface.pinhole) {
-    if (!p.verify_clusters) // the verification has said so otherwise
-      warnNoPinhole ("no guided instance search");
-    return true;
-  }
   GuidedInstanceSearch search;
   search.setInputKeypoints (result.keypoints);
   search.setInputDescriptors (result.descriptors);
@@ -398,15 +377,9 @@ splitByAppearance (const DiscoveryParameters& p,
                    DiscoveryResult& result)
 {
   if (!p.split_by_appearance || !surface.organized || !surface.intensity ||
-      result.image_keypoints.size() != result.keypoints->size() ||
+      !surface.pinhole || result.image_keypoints.size() != result.keypoints->size() ||
       result.models.empty())
     return true;
-  if (!surface.pinhole) {
-    // The verification or the guided search has said so otherwise.
-    if (!p.verify_clusters && !p.guided_search)
-      warnNoPinhole ("no appearance split");
-    return true;
-  }
   AppearanceModelSplitter splitter;
   splitter.setVerification (makeVerification (p, surface, p.split_min_correlation));
   ObjectModels models, parts;
@@ -486,11 +459,14 @@ discoverLeftovers (const DiscoveryParameters& p,
   return true;
 }
 
-/** The points of an organized colour frame, and its grey levels and projection if `grey` (no
-  * keypoints yet); empty for none.
+/** The points of an organized colour frame, and, when a stage compares grey levels (the
+  * cluster verification, the guided search, the appearance split), its grey levels and
+  * projection (no keypoints yet); empty for none. Warns, once for both rounds, when no pinhole
+  * camera fits the frame: those stages then do not run.
   */
 KeypointSurface
-frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized, bool grey)
+frameSurface (const DiscoveryParameters& p,
+              const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   KeypointSurface frame;
   if (!organized)
@@ -498,14 +474,17 @@ frameSurface (const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized, bool
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  if (!grey)
+  if (!p.verify_clusters && !p.guided_search && !p.split_by_appearance)
     return frame;
   frame.intensity =
       std::make_shared<const std::vector<float>> (greyLevels (*organized));
-  // Fitted once for both rounds of the verification.
   FramePinhole pinhole;
   if (fitFramePinhole (*points, pinhole))
     frame.pinhole = std::make_shared<const FramePinhole> (pinhole);
+  else
+    PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+              "(not in its camera's coordinates?): no cluster verification, guided "
+              "instance search or appearance split.\n");
   return frame;
 }
 
@@ -617,12 +596,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                        const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (
-          p,
-          result,
-          surface,
-          frameSurface (organized,
-                        p.verify_clusters || p.guided_search || p.split_by_appearance)))
+  if (runStages (p, result, surface, frameSurface (p, organized)))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();
