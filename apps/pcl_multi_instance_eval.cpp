@@ -6,6 +6,7 @@
 #include <mid/evaluation/benchmark_report.h>
 #include <mid/evaluation/detection_result.h>
 #include <mid/evaluation/ground_truth.h>
+#include <mid/evaluation/object_symmetry.h>
 #include <mid/evaluation/shared_surface.h>
 #include <mid/io/staged_files.h>
 
@@ -56,7 +57,10 @@ printHelp (const char* program)
               "scene_gt.json,\n");
   print_info ("                scene_gt_info.json and mask_visib/; an optional "
               "scenarios.json maps\n");
-  print_info ("                a scene folder name to its scenario name\n");
+  print_info (
+      "                a scene folder name to its scenario name, an optional\n");
+  print_info ("                models_info.json (BOP) the symmetries of each object's "
+              "shape\n");
   print_info ("  RESULTS_DIR   <scene>/<image>.json: results of "
               "pcl_multi_instance_discovery -json\n");
   print_info ("                (a missing result counts as an empty one and is "
@@ -155,7 +159,8 @@ printFrame (const std::string& scene,
             int image,
             const mid::evaluation::GroundTruthFrame& frame,
             const mid::evaluation::DetectionResult& result,
-            const mid::evaluation::FrameScore& score)
+            const mid::evaluation::FrameScore& score,
+            bool textured)
 {
   std::printf ("%s/%06d: %zu objects, instances TP %d FP %d FN %d\n",
                scene.c_str(),
@@ -171,7 +176,9 @@ printFrame (const std::string& scene,
                  instance.object_id,
                  instance.visible_pixels);
     if (instance.shared_surface_cells >= 0)
-      std::printf (", shares %d cubes", instance.shared_surface_cells);
+      std::printf (", shares %d %scubes",
+                   instance.shared_surface_cells,
+                   textured ? "textured " : "");
     const bool located = std::find (score.missed_but_located.begin(),
                                     score.missed_but_located.end(),
                                     k) != score.missed_but_located.end();
@@ -188,6 +195,7 @@ scoreMethod (const std::vector<fs::path>& scenes,
              const fs::path& results,
              double min_inside,
              const SharedSurfaceSettings& surface,
+             const mid::evaluation::ObjectSymmetryTable& symmetries,
              bool per_frame,
              std::map<std::string, mid::evaluation::ScoreSummary>& scenarios)
 {
@@ -212,9 +220,10 @@ scoreMethod (const std::vector<fs::path>& scenes,
         ++missing;
       else if (!mid::evaluation::readDetectionResult (result_path.string(), result))
         return false;
-      const auto score = mid::evaluation::scoreFrame (frame, result, min_inside);
+      const auto score =
+          mid::evaluation::scoreFrame (frame, result, min_inside, symmetries);
       if (per_frame)
-        printFrame (scene, image, frame, result, score);
+        printFrame (scene, image, frame, result, score, surface.min_contrast > 0.0f);
       summary.add (score, result);
     }
   }
@@ -353,6 +362,15 @@ main (int argc, char** argv)
                 "surface too.\n");
     surface.min_contrast = 0.0f;
   }
+  mid::evaluation::ObjectSymmetryTable symmetries;
+  if (!fs::exists (dataset / "models_info.json"))
+    print_info (
+        "'%s' has no models_info.json: pose errors modulo the shapes' symmetries "
+        "are the plain ones.\n",
+        argv[1]);
+  else if (!mid::evaluation::loadBopModelSymmetries (
+               (dataset / "models_info.json").string(), symmetries))
+    return 1;
   std::vector<mid::evaluation::MethodScores> methods;
   for (std::size_t m = 0; m < results.size(); ++m) {
     mid::evaluation::MethodScores method;
@@ -362,6 +380,7 @@ main (int argc, char** argv)
                       results[m],
                       min_inside,
                       surface,
+                      symmetries,
                       per_frame,
                       method.scenarios))
       return 1;
@@ -372,9 +391,11 @@ main (int argc, char** argv)
     if (methods.size() > 1)
       report += "\n" + method.name + ":\n\n";
     report += mid::evaluation::formatReport (method.scenarios);
-    report += "\nRelative poses of the correctly found instances of one object (pairs "
-              "whose rotation is wrong by more than 10 and 45 deg):\n\n" +
-              mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
+    report +=
+        "\nRelative poses of the correctly found instances of one object (pairs "
+        "whose rotation is wrong by more than 10 and 45 deg, then the same modulo "
+        "the symmetries of the object's shape, from models_info.json):\n\n" +
+        mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
     if (surface.cell > 0.0f)
       report +=
           "\nRecall against the " +

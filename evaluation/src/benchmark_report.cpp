@@ -146,18 +146,21 @@ poseErrorRow (const std::string& name,
                  median (errors),
                  median (s.translation_errors_mm));
   std::string text = line;
-  for (const double threshold : thresholds_deg) {
-    const auto above = std::count_if (
-        errors.begin(), errors.end(), [threshold] (double e) { return e > threshold; });
-    std::snprintf (line,
-                   sizeof (line),
-                   " | %4td (%5.3f)",
-                   above,
-                   errors.empty() ? 0.0
-                                  : static_cast<double> (above) /
-                                        static_cast<double> (errors.size()));
-    text += line;
-  }
+  for (const auto* values : {&errors, &s.symmetric_rotation_errors_deg})
+    for (const double threshold : thresholds_deg) {
+      const auto above =
+          std::count_if (values->begin(), values->end(), [threshold] (double e) {
+            return e > threshold;
+          });
+      std::snprintf (line,
+                     sizeof (line),
+                     " | %4td (%5.3f)",
+                     above,
+                     values->empty() ? 0.0
+                                     : static_cast<double> (above) /
+                                           static_cast<double> (values->size()));
+      text += line;
+    }
   return text + " |\n";
 }
 
@@ -177,6 +180,7 @@ ScoreSummary::add (const FrameScore& score, const DetectionResult& result)
     pair_fn += score.pair_fn;
   }
   append (rotation_errors_deg, score.rotation_errors_deg);
+  append (symmetric_rotation_errors_deg, score.symmetric_rotation_errors_deg);
   append (found_shared_cells, score.found_shared_cells);
   append (missed_shared_cells, score.missed_shared_cells);
   append (translation_errors_mm, score.translation_errors_mm);
@@ -200,6 +204,7 @@ ScoreSummary::add (const ScoreSummary& other)
   pair_fp += other.pair_fp;
   pair_fn += other.pair_fn;
   append (rotation_errors_deg, other.rotation_errors_deg);
+  append (symmetric_rotation_errors_deg, other.symmetric_rotation_errors_deg);
   append (found_shared_cells, other.found_shared_cells);
   append (missed_shared_cells, other.missed_shared_cells);
   append (translation_errors_mm, other.translation_errors_mm);
@@ -261,12 +266,14 @@ formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
       "| scenario   | instance pairs | rot. err. deg (median) | transl. "
       "err. mm (median)";
   std::string rule = "|---|---|---|---";
-  for (const double threshold : thresholds_deg) {
-    char column[48];
-    std::snprintf (column, sizeof (column), " | rot. err. > %g deg", threshold);
-    report += column;
-    rule += "|---";
-  }
+  for (const char* modulo : {"", " mod. symmetry"})
+    for (const double threshold : thresholds_deg) {
+      char column[64];
+      std::snprintf (
+          column, sizeof (column), " | rot. err. > %g deg%s", threshold, modulo);
+      report += column;
+      rule += "|---";
+    }
   report += " |\n" + rule + "|\n";
   ScoreSummary total;
   for (const auto& [name, summary] : scenarios) {

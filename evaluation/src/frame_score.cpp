@@ -33,6 +33,7 @@ void
 addPoseErrors (const GroundTruthFrame& truth,
                const DetectedObject& object,
                const std::vector<std::pair<std::size_t, int>>& hits,
+               const ObjectSymmetries& symmetries,
                FrameScore& score)
 {
   for (std::size_t a = 0; a < hits.size(); ++a)
@@ -50,6 +51,11 @@ addPoseErrors (const GroundTruthFrame& truth,
       score.rotation_errors_deg.push_back (
           Eigen::AngleAxisd (Eigen::Quaterniond (relative).normalized()).angle() *
           180.0 / M_PI);
+      // Modulo the shape: b's pose estimated from a's true one, against b's true one.
+      const Eigen::Matrix3d b_estimated =
+          estimated.topLeftCorner<3, 3>() * ga.topLeftCorner<3, 3>().cast<double>();
+      score.symmetric_rotation_errors_deg.push_back (symmetricRotationError (
+          b_estimated, gb.topLeftCorner<3, 3>().cast<double>(), symmetries));
       const Eigen::Vector4d origin = ga.col (3).cast<double>();
       score.translation_errors_mm.push_back (
           ((estimated - expected) * origin).head<3>().norm() * 1000.0);
@@ -61,8 +67,10 @@ addPoseErrors (const GroundTruthFrame& truth,
 FrameScore
 scoreFrame (const GroundTruthFrame& truth,
             const DetectionResult& result,
-            double min_inside)
+            double min_inside,
+            const ObjectSymmetryTable& symmetries)
 {
+  const ObjectSymmetries none;
   FrameScore score;
   std::map<int, int> annotated_of_type;
   for (const auto& instance : truth.instances)
@@ -122,7 +130,12 @@ scoreFrame (const GroundTruthFrame& truth,
     }
     else
       ++score.pair_fp;
-    addPoseErrors (truth, object, true_hits, score);
+    const auto symmetric = symmetries.find (type);
+    addPoseErrors (truth,
+                   object,
+                   true_hits,
+                   symmetric != symmetries.end() ? symmetric->second : none,
+                   score);
   }
   for (std::size_t k = 0; k < truth.instances.size(); ++k) {
     const GroundTruthInstance& annotated = truth.instances[k];

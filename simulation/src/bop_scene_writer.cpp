@@ -140,6 +140,35 @@ array (const std::vector<std::string>& entries)
   return out + "]";
 }
 
+/** BOP's symmetry members of models_info.json, each with its leading comma; empty without
+  * symmetries: "symmetries_discrete" as 4 x 4 row-major motions (millimetres, here rotations
+  * about the origin), "symmetries_continuous" as axes with a zero offset.
+  */
+std::string
+symmetryMembers (const ShapeSymmetries& symmetries)
+{
+  std::string members;
+  if (!symmetries.discrete.empty()) {
+    std::vector<std::string> motions;
+    for (const Eigen::Matrix3d& rotation : symmetries.discrete) {
+      std::vector<double> values;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+          values.push_back (r < 3 && c < 3 ? rotation (r, c) : (r == c ? 1.0 : 0.0));
+      motions.push_back (list (values));
+    }
+    members += ", \"symmetries_discrete\": " + array (motions);
+  }
+  if (!symmetries.continuous_axes.empty()) {
+    std::vector<std::string> axes;
+    for (const Eigen::Vector3d& axis : symmetries.continuous_axes)
+      axes.push_back ("{\"axis\": " + list ({axis.x(), axis.y(), axis.z()}) +
+                      ", \"offset\": [0, 0, 0]}");
+    members += ", \"symmetries_continuous\": " + array (axes);
+  }
+  return members;
+}
+
 } // namespace
 
 BopSceneWriter::BopSceneWriter (const std::string& folder, io::StagedFiles& files)
@@ -229,10 +258,10 @@ formatBopModelsInfo (const ProductCatalog& catalog)
     values.push_back (
         R"({"name": ")" + product.shape->getName() + R"(", "diameter": )" +
         number (size.norm()) + ", \"min_x\": " + number (-0.5 * size.x()) +
-        ", \"min_y\": " + number (-0.5 * size.y()) +
-        ", \"min_z\": " + number (-0.5 * size.z()) +
-        ", \"size_x\": " + number (size.x()) + ", \"size_y\": " + number (size.y()) +
-        ", \"size_z\": " + number (size.z()) + "}");
+        ", \"min_y\": " + number (-0.5 * size.y()) + ", \"min_z\": " +
+        number (-0.5 * size.z()) + ", \"size_x\": " + number (size.x()) +
+        ", \"size_y\": " + number (size.y()) + ", \"size_z\": " + number (size.z()) +
+        symmetryMembers (product.shape->getSymmetries()) + "}");
   }
   return object (keys, values);
 }

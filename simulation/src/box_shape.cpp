@@ -1,7 +1,10 @@
 #include <mid/simulation/box_shape.h>
 #include <mid/simulation/texture.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -138,6 +141,32 @@ std::vector<std::pair<std::string, double>>
 BoxShape::getDimensions() const
 {
   return {{"size_x", size_.x()}, {"size_y", size_.y()}, {"size_z", size_.z()}};
+}
+
+ShapeSymmetries
+BoxShape::getSymmetries() const
+{
+  // A rotation maps the box onto itself iff it permutes the axes (with signs) and each axis
+  // goes to one of the same size.
+  const double tolerance = 1e-9 * size_.maxCoeff();
+  ShapeSymmetries symmetries;
+  std::array<int, 3> axes = {0, 1, 2};
+  do {
+    bool same_sizes = true;
+    for (int i = 0; i < 3; ++i)
+      same_sizes = same_sizes && std::abs (size_[axes[i]] - size_[i]) <= tolerance;
+    if (!same_sizes)
+      continue;
+    for (int signs = 0; signs < 8; ++signs) {
+      Eigen::Matrix3d rotation = Eigen::Matrix3d::Zero();
+      for (int i = 0; i < 3; ++i)
+        rotation (axes[i], i) = (signs >> i) & 1 ? -1.0 : 1.0;
+      if (rotation.determinant() > 0.0 && !rotation.isIdentity())
+        symmetries.discrete.push_back (rotation);
+    }
+  }
+  while (std::next_permutation (axes.begin(), axes.end()));
+  return symmetries;
 }
 
 } // namespace simulation

@@ -145,5 +145,15 @@ CylinderShape::getDimensions() const
   return {{"radius", radius_}, {"height", height_}};
 }
 
+ShapeSymmetries
+CylinderShape::getSymmetries() const
+{
+  ShapeSymmetries symmetries;
+  symmetries.continuous_axes = {Eigen::Vector3d::UnitZ()};
+  symmetries.discrete = {
+      Eigen::Vector3d (1.0, -1.0, -1.0).asDiagonal()}; // half turn about x
+  return symmetries;
+}
+
 } // namespace simulation
 } // namespace mid

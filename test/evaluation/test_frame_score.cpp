@@ -285,3 +285,47 @@ TEST (ScoreSummary, CountsThePairsWhoseRotationIsWrongBeyondEachThreshold)
              std::string::npos)
       << report;
 }
+
+TEST (FrameScore, RotationErrorsModuloTheShapeForgiveItsSymmetries)
+{
+  // Type 1 is a cylinder about model z; type 2 lists no symmetry. Of each, the second copy is
+  // found turned by 60 deg about model z; of type 1 a third copy turned by 60 deg about x.
+  const auto f = frame ({{1, 0}, {1, 150}, {1, 300}, {2, 450}, {2, 600}});
+  mid::evaluation::ObjectSymmetryTable symmetries;
+  symmetries[1].continuous_axes = {Eigen::Vector3d::UnitZ()};
+  symmetries[1].discrete.push_back (
+      Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix());
+  const auto turned = [] (const Eigen::Vector3f& axis) {
+    Eigen::Matrix4f turn = Eigen::Matrix4f::Identity();
+    turn.topLeftCorner<3, 3>() =
+        Eigen::AngleAxisf (static_cast<float> (M_PI / 3.0), axis).toRotationMatrix();
+    return turn;
+  };
+  DetectionResult r;
+  r.objects.push_back (
+      {{instance (0, 20, 0, truePose (f, 0)),
+        instance (150, 20, 0, truePose (f, 1, turned (Eigen::Vector3f::UnitZ()))),
+        instance (300, 20, 0, truePose (f, 2, turned (Eigen::Vector3f::UnitX())))}});
+  r.objects.push_back (
+      {{instance (450, 20, 0, truePose (f, 3)),
+        instance (600, 20, 0, truePose (f, 4, turned (Eigen::Vector3f::UnitZ())))}});
+  const auto s = mid::evaluation::scoreFrame (f, r, 0.9, symmetries);
+  // Pairs (0, 1), (0, 2), (1, 2) of type 1, then (3, 4) of type 2; copy 1 is right modulo
+  // the cylinder, so (1, 2) is off by copy 2's turn across the axis alone.
+  ASSERT_EQ (s.rotation_errors_deg.size(), 4u);
+  ASSERT_EQ (s.symmetric_rotation_errors_deg.size(), 4u);
+  const std::vector<double> plain = {60.0, 60.0, -1.0, 60.0},
+                            modulo = {0.0, 60.0, 60.0, 60.0};
+  for (std::size_t p = 0; p < 4; ++p) {
+    if (plain[p] >= 0.0) {
+      EXPECT_NEAR (s.rotation_errors_deg[p], plain[p], 1e-3) << p;
+    }
+    EXPECT_NEAR (s.symmetric_rotation_errors_deg[p], modulo[p], 1e-2) << p;
+  }
+  EXPECT_GT (s.rotation_errors_deg[2], 61.0); // two turns about different axes
+  // Without the table, every error is the plain one.
+  const auto without = mid::evaluation::scoreFrame (f, r);
+  for (std::size_t p = 0; p < 4; ++p)
+    EXPECT_NEAR (
+        without.symmetric_rotation_errors_deg[p], without.rotation_errors_deg[p], 1e-3);
+}

@@ -2,6 +2,7 @@
 #include "temporary_folder.h"
 
 #include <mid/evaluation/ground_truth.h>
+#include <mid/evaluation/object_symmetry.h>
 #include <mid/io/organized_cloud_io.h>
 #include <mid/io/staged_files.h>
 #include <mid/simulation/benchmark_frame.h>
@@ -304,6 +305,33 @@ TEST (SimulationBopOutput, ModelsInfoListsEveryProduct)
   EXPECT_NEAR (carton.at ("diameter").get<double>(),
                std::sqrt (70.0 * 70 * 2 + 200 * 200),
                1e-9);
+}
+
+TEST (SimulationBopOutput, ModelsInfoGivesTheEvaluatorEachShapesSymmetries)
+{
+  const mid::test::TemporaryFolder folder;
+  const std::string path = folder.file ("models_info.json");
+  std::ofstream (path) << formatBopModelsInfo (catalog());
+  mid::evaluation::ObjectSymmetryTable table;
+  ASSERT_TRUE (mid::evaluation::loadBopModelSymmetries (path, table));
+  ASSERT_EQ (table.size(), static_cast<std::size_t> (PRODUCT_COUNT));
+  std::size_t boxes = 0, cylinders = 0;
+  for (const ProductType& product : catalog()) {
+    const ShapeSymmetries shape = product.shape->getSymmetries();
+    const mid::evaluation::ObjectSymmetries& read = table.at (product.id);
+    ASSERT_EQ (read.discrete.size(), shape.discrete.size()) << product.shape->getName();
+    for (std::size_t i = 0; i < shape.discrete.size(); ++i)
+      EXPECT_TRUE (read.discrete[i].isApprox (shape.discrete[i]));
+    ASSERT_EQ (read.continuous_axes.size(), shape.continuous_axes.size());
+    for (std::size_t i = 0; i < shape.continuous_axes.size(); ++i)
+      EXPECT_TRUE (read.continuous_axes[i].isApprox (shape.continuous_axes[i]));
+    (shape.continuous_axes.empty() ? boxes : cylinders) += 1;
+  }
+  // The catalog: six boxes (each with at least its three half turns), a can and a mug.
+  EXPECT_EQ (boxes, 6u);
+  EXPECT_EQ (cylinders, 2u);
+  EXPECT_EQ (table.at (1).discrete.size(),
+             7u); // the juice carton's square cross-section
 }
 
 TEST (SimulationBopOutput, BadFramesAndEmptyScenesAreRefused)

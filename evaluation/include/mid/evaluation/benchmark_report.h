@@ -29,6 +29,10 @@ struct ScoreSummary
   ///@{
   std::vector<double> rotation_errors_deg, translation_errors_mm;
   ///@}
+  /** \brief The rotation errors modulo the shape's symmetries
+    * (FrameScore::symmetric_rotation_errors_deg), in the same order.
+    */
+  std::vector<double> symmetric_rotation_errors_deg;
   /** \brief Time per frame, and of SIFT extraction alone (milliseconds), of the frames whose
     * result gives them (DetectionResult::total_ms, DetectionResult::features_ms).
     */
@@ -110,9 +114,12 @@ formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
 /** \brief How many relative poses inside one object are wrong: per scenario and in total, the
   * number of pairs of correctly found instances of one object (FrameScore::rotation_errors_deg),
   * their median rotation and translation errors, and how many of them (count and share) have a
-  * rotation error above each threshold. The median alone hides an object glued from groups of
-  * copies that are right among themselves but turned against each other: every instance is
-  * correct by the paper's rules, yet the poses across the groups are wrong for picking.
+  * rotation error above each threshold, then above each threshold modulo the symmetries of the
+  * object's shape (FrameScore::symmetric_rotation_errors_deg). The median alone hides an object
+  * glued from groups of copies that are right among themselves but turned against each other:
+  * every instance is correct by the paper's rules, yet the poses across the groups are wrong
+  * for picking, unless they differ by a symmetry of the shape (a square carton turned a
+  * quarter turn about its long axis fills the same space).
   * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
   * \param[in] thresholds_deg the rotation errors (degrees) above which a pair is counted, one
   * column each, e.g. {10, 45}

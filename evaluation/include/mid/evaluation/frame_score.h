@@ -2,6 +2,7 @@
 
 #include <mid/evaluation/detection_result.h>
 #include <mid/evaluation/ground_truth.h>
+#include <mid/evaluation/object_symmetry.h>
 
 #include <vector>
 
@@ -53,6 +54,12 @@ struct FrameScore
   std::vector<double> rotation_errors_deg;
   std::vector<double> translation_errors_mm;
   ///@}
+  /** \brief The same pairs' rotation errors (degrees) modulo the symmetries of the object's
+    * shape (symmetricRotationError()): a pair turned by a symmetry of the shape against the
+    * truth (a square carton by a quarter turn about its long axis) is right for a gripper
+    * though wrong for the print; equal to rotation_errors_deg for a type without symmetries.
+    */
+  std::vector<double> symmetric_rotation_errors_deg;
 };
 
 /** \brief Score one frame.
@@ -72,12 +79,15 @@ struct FrameScore
   * \param[in] result the frame's result (readDetectionResult())
   * \param[in] min_inside fraction of an instance's keypoints that must lie on one annotated
   * instance for it to be correct, in [0, 1]; default 0.9 (the paper)
+  * \param[in] symmetries the shape symmetries of the object types (loadBopModelSymmetries()),
+  * for FrameScore::symmetric_rotation_errors_deg; default none
   * \return the counts and the relative pose errors
   */
 FrameScore
 scoreFrame (const GroundTruthFrame& truth,
             const DetectionResult& result,
-            double min_inside = 0.9);
+            double min_inside = 0.9,
+            const ObjectSymmetryTable& symmetries = {});
 
 } // namespace evaluation
 } // namespace mid

@@ -91,7 +91,10 @@ private:
 };
 
 /** \brief models_info.json of a catalog (keyed by obj_id, millimetres): diameter (of the
-  * model's bounding box), min_x/y/z and size_x/y/z as in BOP, and the product's name.
+  * model's bounding box), min_x/y/z and size_x/y/z as in BOP, the product's name, and, as BOP
+  * lists them, the global symmetries of its shape (Shape::getSymmetries(); texture not
+  * considered): "symmetries_discrete" (4 x 4 row-major) and "symmetries_continuous" (axis and
+  * offset), each left out when the shape has none.
   */
 std::string
 formatBopModelsInfo (const ProductCatalog& catalog);

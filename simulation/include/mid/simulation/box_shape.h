@@ -92,6 +92,12 @@ public:
   std::vector<std::pair<std::string, double>>
   getDimensions () const override;
 
+  /** \brief The rotations that permute the box's axes (with signs) onto axes of the same size:
+    * the three half turns, and quarter turns about an axis across which two sizes are equal.
+    */
+  ShapeSymmetries
+  getSymmetries () const override;
+
 private:
   Eigen::Vector3d size_;
   std::array<cv::Mat, FACE_COUNT> textures_;

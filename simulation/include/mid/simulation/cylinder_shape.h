@@ -94,6 +94,12 @@ public:
   std::vector<std::pair<std::string, double>>
   getDimensions () const override;
 
+  /** \brief Every turn about the axis (model z), and the half turn about x that swaps the two
+    * caps.
+    */
+  ShapeSymmetries
+  getSymmetries () const override;
+
 private:
   double radius_;
   double height_;

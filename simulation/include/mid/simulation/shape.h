@@ -24,6 +24,24 @@ struct SurfaceHit
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
 };
 
+/** \brief The global symmetries of a shape: the rotations about its model origin that map the
+  * solid onto itself, texture not considered (a gripper that holds the shape cannot tell them
+  * apart; the print can). The ground truth's models_info.json lists them as BOP does
+  * (formatBopModelsInfo()), so that an evaluation can score poses modulo the shape.
+  */
+struct ShapeSymmetries
+{
+  /** \brief Every rotation of the shape's finite symmetry group but the identity (for a box of
+    * three different sizes the three half turns about its axes).
+    */
+  std::vector<Eigen::Matrix3d> discrete;
+  /** \brief Unit axes through the model origin about which every turn maps the shape onto
+    * itself (a cylinder's axis); with them, the symmetries are every product of a discrete one
+    * and a turn about these axes.
+    */
+  std::vector<Eigen::Vector3d> continuous_axes;
+};
+
 /** \brief A textured solid or surface that the SceneRenderer can ray-cast: the interface every
   * primitive (box, cylinder, table plane, ...) implements.
   *
@@ -98,6 +116,15 @@ public:
     */
   virtual std::vector<std::pair<std::string, double>>
   getDimensions () const = 0;
+
+  /** \brief The shape's global symmetries (see ShapeSymmetries). Default: none, as for a
+    * surface that is no object (a table plane).
+    */
+  virtual ShapeSymmetries
+  getSymmetries () const
+  {
+    return {};
+  }
 
 protected:
   Shape() = default;
