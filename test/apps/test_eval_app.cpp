@@ -197,6 +197,39 @@ TEST (EvalApp, ReportsRecallAgainstTheSharedSurfaceWhenTheDatasetHasDepth)
                           "  missed instance 0: obj_id 1, 0 pixels visible, shares "),
       std::string::npos)
       << frames.output;
+  // Without rgb/ the cubes are not tested for texture, and the lines say so.
+  EXPECT_EQ (frames.output.find ("textured cubes"), std::string::npos) << frames.output;
   const auto none = mid::test::runCommand (command + " -shared_cell 0");
   EXPECT_EQ (none.output.find ("R (sharing >="), std::string::npos) << none.output;
+}
+
+TEST (EvalApp, ReadsTheShapesSymmetriesAndRefusesABadModelsInfo)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto dataset = writeDataset (folder), results = folder.path() / "results";
+  std::filesystem::create_directories (results / "000000");
+  std::ofstream (results / "000000" / "000000.json") << kPerfect;
+  const std::string command = std::string (MID_EVAL_APP) + " " + dataset.string() +
+                              " " + results.string() + " -shared_cell 0";
+  const auto without = mid::test::runCommand (command);
+  ASSERT_EQ (without.exit_code, 0) << without.output;
+  EXPECT_NE (without.output.find ("has no models_info.json"), std::string::npos)
+      << without.output;
+  EXPECT_NE (without.output.find ("rot. err. > 45 deg mod. symmetry"),
+             std::string::npos)
+      << without.output;
+
+  std::ofstream (dataset / "models_info.json")
+      << R"({"1": {"diameter": 100, "symmetries_continuous": [{"axis": [0, 0, 1], "offset": [0, 0, 0]}]}})";
+  const auto with = mid::test::runCommand (command);
+  ASSERT_EQ (with.exit_code, 0) << with.output;
+  EXPECT_EQ (with.output.find ("has no models_info.json"), std::string::npos)
+      << with.output;
+
+  std::ofstream (dataset / "models_info.json")
+      << R"({"1": {"symmetries_discrete": [[1, 0, 0]]}})";
+  const auto bad = mid::test::runCommand (command);
+  EXPECT_NE (bad.exit_code, 0);
+  EXPECT_NE (bad.output.find ("models_info.json"), std::string::npos) << bad.output;
+  EXPECT_NE (bad.output.find ("16 numbers"), std::string::npos) << bad.output;
 }
