@@ -142,6 +142,16 @@ printHelp (const char* program)
   line ("-split_corr C",
         "instances of one model alike at this grey-level correlation, each way",
         static_cast<double> (d.split_min_correlation));
+  line ("-surface_step N",
+        "surface refinement: a depth sample every N pixels",
+        d.surface_sample_step);
+  line ("-surface_dist D",
+        "surface refinement: largest partner distance, metres",
+        static_cast<double> (d.surface_max_distance));
+  line ("-surface_weight W",
+        "surface refinement: weight of a depth sample against a landmark",
+        static_cast<double> (d.surface_weight));
+  line ("-surface_iterations N", "surface refinement: rounds", d.surface_iterations);
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -180,6 +190,10 @@ printHelp (const char* program)
       "do not\n");
   print_info ("                      look alike (off by default, as in the paper)\n");
   print_info (
+      "  -no_surface         keep the poses of the keypoints alone, not refined "
+      "on the\n");
+  print_info ("                      depth (the paper's behaviour)\n");
+  print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
   print_info (
@@ -210,6 +224,11 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_verification", 0},
                                       {"-no_guided", 0},
                                       {"-split", 0},
+                                      {"-no_surface", 0},
+                                      {"-surface_step", 1},
+                                      {"-surface_dist", 1},
+                                      {"-surface_weight", 1},
+                                      {"-surface_iterations", 1},
                                       {"-split_corr", 1},
                                       {"-guided_seed_dist", 1},
                                       {"-guided_desc_dist", 1},
@@ -293,6 +312,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
+  p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -328,6 +348,10 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-guided_corr", p.guided_min_correlation) &&
       parseNumber (argc, argv, "-guided_hypotheses", p.guided_hypotheses) &&
       parseNumber (argc, argv, "-split_corr", p.split_min_correlation) &&
+      parseNumber (argc, argv, "-surface_step", p.surface_sample_step) &&
+      parseNumber (argc, argv, "-surface_dist", p.surface_max_distance) &&
+      parseNumber (argc, argv, "-surface_weight", p.surface_weight) &&
+      parseNumber (argc, argv, "-surface_iterations", p.surface_iterations) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

@@ -185,6 +185,18 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "split_min_correlation",
              static_cast<double> (p.split_min_correlation),
              "in [-1, 1]");
+  c.require (
+      p.surface_sample_step >= 1, "surface_sample_step", p.surface_sample_step, ">= 1");
+  c.require (p.surface_max_distance > 0.0f && std::isfinite (p.surface_max_distance),
+             "surface_max_distance",
+             static_cast<double> (p.surface_max_distance),
+             "finite and > 0");
+  c.require (p.surface_weight >= 0.0f && std::isfinite (p.surface_weight),
+             "surface_weight",
+             static_cast<double> (p.surface_weight),
+             "finite and >= 0");
+  c.require (
+      p.surface_iterations >= 1, "surface_iterations", p.surface_iterations, ">= 1");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -15,6 +15,7 @@
 #include <mid/segmentation/guided_instance_search.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
+#include <mid/segmentation/surface_pose_refinement.h>
 #include <mid/segmentation/transformation_space_clustering.h>
 
 #include <pcl/common/io.h>
@@ -474,7 +475,8 @@ frameSurface (const DiscoveryParameters& p,
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  if (!p.verify_clusters && !p.guided_search && !p.split_by_appearance)
+  if (!p.verify_clusters && !p.guided_search && !p.split_by_appearance &&
+      !p.surface_refinement)
     return frame;
   frame.intensity =
       std::make_shared<const std::vector<float>> (greyLevels (*organized));
@@ -484,8 +486,34 @@ frameSurface (const DiscoveryParameters& p,
   else
     PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
               "(not in its camera's coordinates?): no cluster verification, guided "
-              "instance search or appearance split.\n");
+              "instance search, appearance split or surface refinement.\n");
   return frame;
+}
+
+/** Refine every model's instance poses on the frame's depth
+  * (DiscoveryParameters::surface_refinement), when the organized frame and its projection are
+  * known; times the "surface" stage either way.
+  */
+bool
+refineOnSurface (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.surface_refinement && frame.organized && frame.pinhole) {
+    SurfacePoseRefinement refinement;
+    refinement.setInputKeypoints (result.keypoints);
+    refinement.setKeypointSurface (frame);
+    refinement.setSampleStep (p.surface_sample_step);
+    refinement.setMaxCorrespondenceDistance (p.surface_max_distance);
+    refinement.setSurfaceWeight (p.surface_weight);
+    refinement.setMaxIterations (p.surface_iterations);
+    for (auto& model : result.models)
+      if (!refinement.refine (model))
+        return false;
+  }
+  result.timing_ms.emplace_back ("surface", watch.getTime());
+  return true;
 }
 
 /** discoverFromKeypoints() without its cleanup on failure. */
@@ -596,7 +624,8 @@ discoverFromKeypoints (const DiscoveryParameters& p,
                        const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
 {
   const std::size_t timed = result.timing_ms.size();
-  if (runStages (p, result, surface, frameSurface (p, organized)))
+  const KeypointSurface frame = frameSurface (p, organized);
+  if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();

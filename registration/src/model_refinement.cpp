@@ -31,29 +31,6 @@ meanSquaredResidual (const ObjectModel& model, const KeypointCloud& keypoints)
   return count > 0 ? sum / static_cast<float> (count) : 0.0f;
 }
 
-/** Each landmark := mean of its observations mapped into the model frame. */
-void
-updateLandmarks (ObjectModel& model, const KeypointCloud& keypoints)
-{
-  std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> sums (
-      model.landmarks.size(), Eigen::Vector3f::Zero());
-  std::vector<int> counts (model.landmarks.size(), 0);
-  for (const auto& instance : model.instances) {
-    const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3>();
-    const Eigen::Vector3f translation = instance.pose.topRightCorner<3, 1>();
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
-      const auto l = static_cast<std::size_t> (instance.landmarks[o]);
-      const Eigen::Vector3f z =
-          keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap();
-      sums[l] += rotation.transpose() * (z - translation);
-      ++counts[l];
-    }
-  }
-  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
-    if (counts[l] > 0)
-      model.landmarks[l].getVector3fMap() = sums[l] / static_cast<float> (counts[l]);
-}
-
 /** Each pose but the fixed one := Umeyama fit of its landmarks onto its keypoints. */
 void
 updatePoses (ObjectModel& model,
@@ -80,6 +57,28 @@ updatePoses (ObjectModel& model,
 
 } // namespace
 
+void
+updateModelLandmarks (ObjectModel& model, const KeypointCloud& keypoints)
+{
+  std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> sums (
+      model.landmarks.size(), Eigen::Vector3f::Zero());
+  std::vector<int> counts (model.landmarks.size(), 0);
+  for (const auto& instance : model.instances) {
+    const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3>();
+    const Eigen::Vector3f translation = instance.pose.topRightCorner<3, 1>();
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+      const auto l = static_cast<std::size_t> (instance.landmarks[o]);
+      const Eigen::Vector3f z =
+          keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap();
+      sums[l] += rotation.transpose() * (z - translation);
+      ++counts[l];
+    }
+  }
+  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
+    if (counts[l] > 0)
+      model.landmarks[l].getVector3fMap() = sums[l] / static_cast<float> (counts[l]);
+}
+
 float
 refineModel (ObjectModel& model,
              const KeypointCloud& keypoints,
@@ -91,7 +90,7 @@ refineModel (ObjectModel& model,
   if (costs != nullptr)
     costs->assign (1, cost);
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
-    updateLandmarks (model, keypoints);
+    updateModelLandmarks (model, keypoints);
     updatePoses (model, keypoints, fixed_instance);
     const float next = meanSquaredResidual (model, keypoints);
     if (costs != nullptr)

@@ -78,6 +78,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "modeling",
                             "detection",
                             "leftovers",
+                            "surface",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;

@@ -228,6 +228,22 @@ struct DiscoveryParameters
   bool split_by_appearance = false;
   float split_min_correlation = 0.4f;
   ///@}
+  /** \brief After both rounds, refine every model's instance poses on the frame's depth (not
+    * in the paper; SurfacePoseRefinement): each instance's surface samples (every
+    * surface_sample_step pixels, >= 1, inside the landmarks' box grown by 5 mm) are aligned
+    * point-to-plane with what the other instances show of the object, partners within
+    * surface_max_distance (> 0), each weighted by surface_weight (>= 0) against one landmark
+    * residual, for surface_iterations rounds (>= 1). Needs the organized frame
+    * (MultiInstanceDiscovery passes it); changes poses and landmarks only, never which
+    * instances are found.
+    */
+  ///@{
+  bool surface_refinement = true;
+  int surface_sample_step = 3;
+  float surface_max_distance = 0.01f;
+  float surface_weight = 1.0f;
+  int surface_iterations = 4;
+  ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).
     */

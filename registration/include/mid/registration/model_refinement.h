@@ -34,4 +34,14 @@ refineModel (ObjectModel& model,
              std::size_t fixed_instance = 0,
              std::vector<float>* costs = nullptr);
 
+/** \brief The landmark step of refineModel() on its own: each landmark becomes the mean of its
+  * observations mapped into the model frame by the observing instances' poses (a landmark no
+  * instance observes stays). For a step that moves the poses by other evidence
+  * (SurfacePoseRefinement) and must keep the landmarks consistent with them.
+  * \param[in,out] model its instances' poses and observations are read, its landmarks written
+  * \param[in] keypoints the frame's keypoints the observations index (indices not checked)
+  */
+void
+updateModelLandmarks (ObjectModel& model, const KeypointCloud& keypoints);
+
 } // namespace mid
