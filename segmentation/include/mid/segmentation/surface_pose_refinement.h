@@ -35,7 +35,8 @@ namespace mid {
   * 4. **Landmark step.** Each landmark becomes the mean of its observations under the new
   *    poses (updateModelLandmarks()); steps 1 to 4 repeat for the given number of iterations.
   *
-  * A model with one instance, or instances without samples, keeps the keypoint poses there.
+  * A model with one instance is left as it is; an instance without partners on the surface
+  * takes the landmark steps only, as in refineModel().
   * Deterministic: no random draws.
   */
 class SurfacePoseRefinement
