@@ -152,6 +152,12 @@ printHelp (const char* program)
         "surface refinement: weight of a depth sample against a landmark",
         static_cast<double> (d.surface_weight));
   line ("-surface_iterations N", "surface refinement: rounds", d.surface_iterations);
+  line ("-size_tol D",
+        "size merge: largest difference of two box edges, metres",
+        static_cast<double> (d.size_tolerance));
+  line ("-size_rel_tol R",
+        "size merge: ... or R times the edge, if larger",
+        static_cast<double> (d.relative_size_tolerance));
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -194,6 +200,10 @@ printHelp (const char* program)
       "on the\n");
   print_info ("                      depth (the paper's behaviour)\n");
   print_info (
+      "  -no_size_merge      keep models apart whose copies occupy boxes of one size "
+      "on the\n");
+  print_info ("                      table (the paper's behaviour)\n");
+  print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
   print_info (
@@ -229,6 +239,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-surface_dist", 1},
                                       {"-surface_weight", 1},
                                       {"-surface_iterations", 1},
+                                      {"-no_size_merge", 0},
+                                      {"-size_tol", 1},
+                                      {"-size_rel_tol", 1},
                                       {"-split_corr", 1},
                                       {"-guided_seed_dist", 1},
                                       {"-guided_desc_dist", 1},
@@ -313,6 +326,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
+  p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -352,6 +366,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-surface_dist", p.surface_max_distance) &&
       parseNumber (argc, argv, "-surface_weight", p.surface_weight) &&
       parseNumber (argc, argv, "-surface_iterations", p.surface_iterations) &&
+      parseNumber (argc, argv, "-size_tol", p.size_tolerance) &&
+      parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

@@ -197,6 +197,15 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "finite and >= 0");
   c.require (
       p.surface_iterations >= 1, "surface_iterations", p.surface_iterations, ">= 1");
+  c.require (p.size_tolerance >= 0.0f && std::isfinite (p.size_tolerance),
+             "size_tolerance",
+             static_cast<double> (p.size_tolerance),
+             "finite and >= 0");
+  c.require (p.relative_size_tolerance >= 0.0f &&
+                 std::isfinite (p.relative_size_tolerance),
+             "relative_size_tolerance",
+             static_cast<double> (p.relative_size_tolerance),
+             "finite and >= 0");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -13,6 +13,7 @@
 #include <mid/segmentation/appearance_model_splitter.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/surface_pose_refinement.h>
@@ -516,6 +517,32 @@ refineOnSurface (const DiscoveryParameters& p,
   return true;
 }
 
+/** Merge the models of one size (DiscoveryParameters::merge_by_size), when the organized
+  * frame is known; times the "size_merge" stage either way.
+  */
+bool
+mergeBySize (const DiscoveryParameters& p,
+             const KeypointSurface& frame,
+             DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.merge_by_size && frame.organized) {
+    KeypointSurface keypoint_surface;
+    keypoint_surface.organized = frame.organized;
+    for (const auto& k : result.image_keypoints)
+      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+    ModelSizeMerger merger;
+    merger.setInputKeypoints (result.keypoints);
+    merger.setKeypointSurface (keypoint_surface);
+    merger.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
+    merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+    if (!merger.merge (result.models))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_merge", watch.getTime());
+  return true;
+}
+
 /** discoverFromKeypoints() without its cleanup on failure. */
 bool
 runStages (const DiscoveryParameters& p,
@@ -625,7 +652,8 @@ discoverFromKeypoints (const DiscoveryParameters& p,
 {
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
-  if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result))
+  if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
+      mergeBySize (p, frame, result))
     return true;
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();

@@ -79,6 +79,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "detection",
                             "leftovers",
                             "surface",
+                            "size_merge",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;

@@ -188,6 +188,35 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
   EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
 }
 
+TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
+{
+  // Two copies show one print, two others another, all four boxes of one size lying on a
+  // table: like the copies of one carton that show different faces. Appearance makes two
+  // models; their boxes' size makes one object of them, unless the size merge is off.
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  const auto scene =
+      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.16, -0.1, z, 10.0)},
+                               {kJuice, size, boxPose (0.16, -0.12, z, -35.0)},
+                               {kCookies, size, boxPose (0.17, 0.11, z, 160.0)},
+                               {kJuice, size, boxPose (-0.15, 0.12, z, 70.0)}},
+                              0.95);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters apart;
+  apart.merge_by_size = false;
+  discovery.setParameters (apart);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 2u);
+
+  discovery.setParameters (mid::DiscoveryParameters());
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto boxes = boxesOf (scene, result, result.models[0]);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
+}
+
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)
 {
   const auto scene = mid::test::renderBoxes ({
@@ -237,6 +266,10 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   EXPECT_FALSE (mid::validateDiscoveryParameters (parameters, problem));
   EXPECT_NE (problem.find ("cluster_distance"), std::string::npos);
   EXPECT_TRUE (mid::validateDiscoveryParameters (mid::DiscoveryParameters(), problem));
+  parameters = mid::DiscoveryParameters();
+  parameters.relative_size_tolerance = -0.01f;
+  EXPECT_FALSE (mid::validateDiscoveryParameters (parameters, problem));
+  EXPECT_NE (problem.find ("relative_size_tolerance"), std::string::npos);
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

@@ -244,6 +244,19 @@ struct DiscoveryParameters
   float surface_weight = 1.0f;
   int surface_iterations = 4;
   ///@}
+  /** \brief Last, merge models whose copies occupy boxes of one size on the support plane (not
+    * in the paper; ModelSizeMerger): the second models of one product, made of copies that
+    * show other faces than the first model's, which no descriptor links. Sizes agree when
+    * each edge differs by at most the larger of size_tolerance (metres, >= 0) and
+    * relative_size_tolerance (>= 0) times the edge. Two products of one size are merged too.
+    * Needs the organized frame (MultiInstanceDiscovery passes it). Seed-3 development frames:
+    * F1 0.786 -> 0.793, seed 2 0.780 -> 0.793 (doc/benchmark.md, session 25).
+    */
+  ///@{
+  bool merge_by_size = true;
+  float size_tolerance = 0.006f;
+  float relative_size_tolerance = 0.03f;
+  ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).
     */

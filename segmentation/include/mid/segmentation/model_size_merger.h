@@ -1,0 +1,204 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+#include <mid/segmentation/surface_gap.h>
+
+#include <string>
+
+namespace mid {
+
+/** \brief Merges models of one object that share no appearance, by the size of the box their
+  * copies occupy on the support plane (not in the paper).
+  *
+  * A lying carton shows one of four long faces up. When the copies that show one set of faces
+  * make one model and the copies that show another make a second, no descriptor links the two
+  * (their landmarks lie on different faces), and the paper's rules count the second model's
+  * instances as false positives. The depth still says that both models are boxes of one size.
+  * This step:
+  *
+  * 1. fits the frame's support plane (fitSupportPlane());
+  * 2. measures, for every instance, the box its object occupies on the plane, from the surface
+  *    connected to its keypoints (measureInstanceExtent()); a surface that reaches another
+  *    instance's keypoint (of any model) holds two objects and is not used;
+  * 3. gives each model the size that most of its measured instances agree on (ties: the
+  *    instance with the larger surface), when at least `min_agreeing` do;
+  * 4. merges two models whose sizes agree within the size tolerance, edge by edge, the smaller
+  *    model into the larger: the boxes' frames (axes along the edges in ascending length)
+  *    give the transform between the model frames, so the merged poses are those of the box,
+  *    right up to the box's symmetries (a half turn of a box, a quarter turn of a square one).
+  *
+  * Two products of one size (within the tolerance) are merged too: the step trades those for
+  * the second models of one product, which are far more common on a table of several copies
+  * of one product. Touching copies whose surfaces join are not measured.
+  * Deterministic (the plane's hypotheses are drawn with a fixed seed).
+  */
+class ModelSizeMerger
+{
+public:
+  /** \brief The frame's keypoints that the models' observations index (camera frame, metres).
+    * Required.
+    */
+  ///@{
+  void
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
+  const KeypointCloud::ConstPtr&
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
+  ///@}
+
+  /** \brief The organized frame and each keypoint's pixel in it. Required: the organized
+    * frame and the keypoint pixels; grey levels and projection are not read.
+    */
+  ///@{
+  void
+  setKeypointSurface (const KeypointSurface& surface)
+  {
+    surface_ = surface;
+  }
+  const KeypointSurface&
+  getKeypointSurface () const
+  {
+    return surface_;
+  }
+  ///@}
+
+  /** \brief Largest distance between two neighbouring pixels' points of one surface (metres,
+    * default 0.008, > 0).
+    */
+  ///@{
+  void
+  setMaxStep (float step)
+  {
+    max_step_ = step;
+  }
+  float
+  getMaxStep () const
+  {
+    return max_step_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a surface point from its instance's keypoints' centroid
+    * (metres, default 0.3, > 0): bounds the objects that can be measured.
+    */
+  ///@{
+  void
+  setMaxRadius (float radius)
+  {
+    max_radius_ = radius;
+  }
+  float
+  getMaxRadius () const
+  {
+    return max_radius_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
+    * > 0).
+    */
+  ///@{
+  void
+  setPlaneTolerance (float tolerance)
+  {
+    plane_tolerance_ = tolerance;
+  }
+  float
+  getPlaneTolerance () const
+  {
+    return plane_tolerance_;
+  }
+  ///@}
+
+  /** \brief Two sizes agree when each edge differs by at most the larger of `absolute`
+    * (metres, default 0.006, >= 0) and `relative` times the longer of the two edges (default
+    * 0.03, >= 0).
+    */
+  ///@{
+  void
+  setSizeTolerance (float absolute, float relative)
+  {
+    size_tolerance_ = absolute;
+    relative_size_tolerance_ = relative;
+  }
+  float
+  getSizeTolerance () const
+  {
+    return size_tolerance_;
+  }
+  float
+  getRelativeSizeTolerance () const
+  {
+    return relative_size_tolerance_;
+  }
+  ///@}
+
+  /** \brief Measured instances that must agree on a model's size (default 1, >= 1). */
+  ///@{
+  void
+  setMinAgreeing (int count)
+  {
+    min_agreeing_ = count;
+  }
+  int
+  getMinAgreeing () const
+  {
+    return min_agreeing_;
+  }
+  ///@}
+
+  /** \brief Instances of two merged models whose poses coincide within these (radians,
+    * metres) are one instance (mergeModel(); defaults 10 deg and 0.01).
+    */
+  ///@{
+  void
+  setDuplicateThresholds (float angle, float distance)
+  {
+    duplicate_angle_ = angle;
+    duplicate_distance_ = distance;
+  }
+  float
+  getDuplicateAngle () const
+  {
+    return duplicate_angle_;
+  }
+  float
+  getDuplicateDistance () const
+  {
+    return duplicate_distance_;
+  }
+  ///@}
+
+  /** \brief Merge the models of one size.
+    * \param[in,out] models the frame's models; merged ones are removed, the others keep their
+    * order. Without a support plane nothing changes.
+    * \return false (with a PCL_ERROR, models unchanged) on missing or inconsistent input, a
+    * parameter out of range, or an observation outside the keypoints
+    */
+  bool
+  merge (ObjectModels& models) const;
+
+private:
+  /** \brief What is wrong with the input, parameters or `models`; empty if nothing. */
+  std::string
+  inputProblem (const ObjectModels& models) const;
+
+  KeypointCloud::ConstPtr keypoints_;
+  KeypointSurface surface_;
+  float max_step_ = 0.008f;
+  float max_radius_ = 0.3f;
+  float plane_tolerance_ = 0.01f;
+  float size_tolerance_ = 0.006f;
+  float relative_size_tolerance_ = 0.03f;
+  int min_agreeing_ = 1;
+  float duplicate_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
+  float duplicate_distance_ = 0.01f;
+};
+
+} // namespace mid
