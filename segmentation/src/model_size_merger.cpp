@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -27,10 +28,6 @@ struct ModelSize
 };
 
 using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
-
-/** No instance's keypoint lies on a pixel; keypoints of several instances do. */
-constexpr int kNobody = -1;
-constexpr int kSeveral = -2;
 
 class SizeAgreement
 {
@@ -92,61 +89,40 @@ ModelSizeMerger::merge (ObjectModels& models) const
   if (!fitSupportPlane (organized, plane_tolerance_, kMinPlaneShare, plane))
     return true;
 
-  // The instance (numbered over all models) whose keypoints lie on each pixel: kNobody, or
-  // kSeveral when keypoints of several instances share it.
-  std::vector<int> owner (organized.size(), kNobody);
-  std::vector<int> first_instance (models.size(), 0);
-  for (std::size_t m = 0, id = 0; m < models.size(); ++m) {
-    first_instance[m] = static_cast<int> (id);
-    for (const auto& instance : models[m].instances) {
-      for (const auto k : instance.keypoints) {
-        int& here = owner[static_cast<std::size_t> (
-            surface_.keypoint_pixels[static_cast<std::size_t> (k)])];
-        here = here == kNobody || here == static_cast<int> (id) ? static_cast<int> (id)
-                                                                : kSeveral;
-      }
-      ++id;
+  // Every instance's surface, grown from its keypoints' pixels, all at once.
+  std::vector<pcl::Indices> seeds;
+  for (const auto& model : models)
+    for (const auto& instance : model.instances) {
+      seeds.emplace_back();
+      for (const auto k : instance.keypoints)
+        seeds.back().push_back (surface_.keypoint_pixels[static_cast<std::size_t> (k)]);
     }
-  }
+  std::vector<pcl::Indices> surfaces;
+  if (!growInstanceSurfaces (
+          organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, surfaces))
+    return false;
 
   const SizeAgreement agree (size_tolerance_, relative_size_tolerance_);
   ModelSizes sizes (models.size());
-  for (std::size_t m = 0; m < models.size(); ++m) {
+  for (std::size_t m = 0, id = 0; m < models.size(); ++m) {
     std::vector<InstanceExtent, Eigen::aligned_allocator<InstanceExtent>> extents;
     std::vector<std::size_t> measured;
-    for (std::size_t i = 0; i < models[m].instances.size(); ++i) {
-      pcl::Indices seeds;
-      for (const auto k : models[m].instances[i].keypoints)
-        seeds.push_back (surface_.keypoint_pixels[static_cast<std::size_t> (k)]);
+    for (std::size_t i = 0; i < models[m].instances.size(); ++i, ++id) {
       InstanceExtent extent;
-      if (!measureInstanceExtent (organized,
-                                  plane,
-                                  seeds,
-                                  max_step_,
-                                  max_radius_,
-                                  plane_tolerance_,
-                                  extent))
-        continue;
-      const int id = first_instance[m] + static_cast<int> (i);
-      const bool alone = std::all_of (
-          extent.surface.begin(), extent.surface.end(), [&] (pcl::index_t p) {
-            const int here = owner[static_cast<std::size_t> (p)];
-            return here == kNobody || here == id;
-          });
-      if (alone) {
+      if (fitInstanceBox (organized, plane, surfaces[id], extent)) {
         extents.push_back (extent);
         measured.push_back (i);
       }
     }
     int best_count = 0;
-    std::size_t best_surface = 0;
+    std::size_t best_surface = std::numeric_limits<std::size_t>::max();
     for (std::size_t a = 0; a < extents.size(); ++a) {
       const auto count = static_cast<int> (
           std::count_if (extents.begin(), extents.end(), [&] (const InstanceExtent& b) {
             return agree (extents[a].size, b.size);
           }));
       if (count > best_count ||
-          (count == best_count && extents[a].surface.size() > best_surface)) {
+          (count == best_count && extents[a].surface.size() < best_surface)) {
         best_count = count;
         best_surface = extents[a].surface.size();
         sizes[m].size = extents[a].size;

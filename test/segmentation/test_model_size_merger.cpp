@@ -4,11 +4,15 @@
 
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size_merger.h>
+#include <mid/simulation/pinhole_camera.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
 
 namespace {
 
@@ -67,6 +71,14 @@ rotationErrorModuloBox (const Eigen::Matrix4f& pose, const Eigen::Isometry3d& tr
     best = std::min (best, static_cast<double> (error.angle()) * 180.0 / M_PI);
   }
   return best;
+}
+
+/** True if `point` lies in the box (within 2 mm). */
+bool
+insideBox (const mid::test::BoxSpec& box, const Eigen::Vector3f& point)
+{
+  const Eigen::Vector3d local = box.pose.inverse() * point.cast<double>();
+  return (local.cwiseAbs() - 0.5 * box.size).maxCoeff() < 0.002;
 }
 
 struct Boxes : mid::test::RenderedKeypoints
@@ -171,6 +183,66 @@ TEST (InstanceExtent, FindsNothingOffThePlaneFromATableSeed)
   EXPECT_TRUE (extent.surface.empty());
 }
 
+/** The frame of the surface z = depth (x, y) (metres, all between 0.85 and 1.1) seen by the
+  * default camera.
+  */
+pcl::PointCloud<pcl::PointXYZ>
+heightField (const std::function<double (double, double)>& depth)
+{
+  const mid::simulation::PinholeCamera camera;
+  pcl::PointCloud<pcl::PointXYZ> cloud (static_cast<std::uint32_t> (camera.width),
+                                        static_cast<std::uint32_t> (camera.height));
+  for (int v = 0; v < camera.height; ++v)
+    for (int u = 0; u < camera.width; ++u) {
+      const double rx = (u - camera.cx) / camera.fx, ry = (v - camera.cy) / camera.fy;
+      // The ray first meets the surface where z >= depth (rx z, ry z): marched in 2 mm
+      // steps, then bisected.
+      const auto behind = [&] (double z) { return z >= depth (rx * z, ry * z); };
+      double far = 0.85;
+      while (!behind (far) && far < 1.1)
+        far += 0.002;
+      double near = far - 0.002;
+      for (int i = 0; i < 20; ++i) {
+        const double middle = 0.5 * (near + far);
+        (behind (middle) ? far : near) = middle;
+      }
+      const double z = far;
+      cloud.at (u, v) = pcl::PointXYZ (static_cast<float> (rx * z),
+                                       static_cast<float> (ry * z),
+                                       static_cast<float> (z));
+    }
+  return cloud;
+}
+
+TEST (InstanceExtent, StopsAtTheCreaseWhereTwoObjectsMeet)
+{
+  // A table at 1 m; on it a box 0.12 x 0.09 x 0.04 around the optical axis, and against its
+  // far long side a roof whose slopes (2 in 1) rise from the box's top to a ridge 0.06 above
+  // it. Box top and roof meet in a crease without a depth step.
+  const auto depth = [] (double x, double y) {
+    double z = 1.0;
+    if (std::abs (x) < 0.06 && std::abs (y) < 0.045)
+      z = 0.96;
+    if (std::abs (x) < 0.06 && y >= 0.045 && y < 0.105)
+      z = std::min (z, 0.96 - 2.0 * std::min (y - 0.045, 0.105 - y));
+    return z;
+  };
+  const auto cloud = heightField (depth);
+  Eigen::Vector4f plane;
+  ASSERT_TRUE (mid::fitSupportPlane (cloud, 0.01f, 0.2f, plane));
+  const auto centre = static_cast<pcl::index_t> (240 * cloud.width + 320);
+  const pcl::Indices seeds = {centre - 10, centre, centre + 10};
+  mid::InstanceExtent extent;
+  ASSERT_TRUE (
+      mid::measureInstanceExtent (cloud, plane, seeds, 0.008f, 0.3f, 0.01f, extent));
+  // Over the crease, the surface would climb the roof: 0.12 x 0.15 x 0.1. The few pixels
+  // next to the crease, behind their chords too, are lost to the box's width.
+  EXPECT_NEAR (extent.size[0], 0.04f, 0.003f);
+  EXPECT_GT (extent.size[1], 0.08f);
+  EXPECT_LT (extent.size[1], 0.092f);
+  EXPECT_NEAR (extent.size[2], 0.12f, 0.004f);
+}
+
 TEST (ModelSizeMerger, MergesTwoModelsOfOneBoxSizeIntoTheBoxFrame)
 {
   const Boxes scene (fourBoxes());
@@ -211,17 +283,121 @@ TEST (ModelSizeMerger, KeepsModelsOfDifferentSizesApart)
   EXPECT_EQ (models[1].instances.size(), 2u);
 }
 
-TEST (ModelSizeMerger, DoesNotMeasureTouchingCopies)
+/** Boxes 0 and 1 (one print) apart, boxes 2 and 3 (another print) touching along their long
+  * edges, so that their tops join in one flat surface.
+  */
+std::vector<mid::test::BoxSpec>
+twoApartTwoTouching (const Eigen::Vector3d& size_of_0_and_1 = kPrintedBoxSize)
 {
-  // Boxes 2 and 3 touch along their long edges: their surfaces join, and each holds the
-  // other's keypoints, so their model has no size.
-  const Boxes scene ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
-                      restingBox (kApplePrint, 0.16, -0.12, -35.0),
-                      restingBox (kSoyPrint, 0.0, 0.1, 0.0),
-                      restingBox (kSoyPrint, 0.0, 0.19, 180.0)});
+  return {restingBox (kApplePrint, -0.16, -0.1, 10.0, size_of_0_and_1),
+          restingBox (kApplePrint, 0.16, -0.12, -35.0, size_of_0_and_1),
+          restingBox (kSoyPrint, 0.0, 0.1, 0.0),
+          restingBox (kSoyPrint, 0.0, 0.19, 180.0)};
+}
+
+TEST (InstanceExtent, SplitsTheJoinedSurfaceOfTouchingCopies)
+{
+  const Boxes scene (twoApartTwoTouching());
+  const auto& organized = *scene.surface.organized;
+  Eigen::Vector4f plane;
+  ASSERT_TRUE (mid::fitSupportPlane (organized, 0.01f, 0.2f, plane));
+  std::vector<pcl::Indices> surfaces;
+  ASSERT_TRUE (mid::growInstanceSurfaces (organized,
+                                          plane,
+                                          {scene.seedsOn (2), scene.seedsOn (3)},
+                                          0.008f,
+                                          0.3f,
+                                          0.01f,
+                                          surfaces));
+  ASSERT_EQ (surfaces.size(), 2u);
+  // Where the tops join, the pixels go to the box whose keypoints reach them first: the
+  // split follows the keypoints, not the seam, but each surface lies mostly on its own box,
+  // and together they hold both boxes' tops. Grown as one, either surface would hold both.
+  std::size_t total = 0;
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto& box = scene.scene.boxes[2 + s];
+    std::size_t own = 0;
+    for (const auto pixel : surfaces[s])
+      if (insideBox (box, organized[pixel].getVector3fMap()))
+        ++own;
+    EXPECT_GT (own, surfaces[s].size() * 8 / 10) << "box " << 2 + s;
+    total += surfaces[s].size();
+  }
+  const double top = kPrintedBoxSize.x() * kPrintedBoxSize.y();
+  const double pixel =
+      (kTableDepth - kPrintedBoxSize.z()) / mid::simulation::PinholeCamera().fx;
+  EXPECT_GT (static_cast<double> (total), 0.9 * 2.0 * top / (pixel * pixel));
+}
+
+TEST (ModelSizeMerger, KeepsTouchingCopiesApartFromABoxOfTheirJoinedSize)
+{
+  // Boxes 0 and 1 are as wide as boxes 2 and 3 side by side: measured as one, the joined tops
+  // of 2 and 3 would give their model the size of the other.
+  const Boxes scene (twoApartTwoTouching ({0.12, 0.18, 0.04}));
   mid::ObjectModels models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3})};
   ASSERT_TRUE (scene.merger().merge (models));
   EXPECT_EQ (models.size(), 2u);
+}
+
+TEST (ModelSizeMerger, MergesCopiesShowingAnotherFaceUp)
+{
+  // Boxes 2 to 4 are boxes 0 and 1 (edges 0.04, 0.09, 0.12) lying on a 0.12 x 0.04 face, their
+  // frames' axes in another order: their model's size is found on other axes. It has more
+  // instances, so boxes 0 and 1's model is merged into it.
+  const Eigen::Vector3d on_side (0.12, 0.04, 0.09);
+  const Boxes scene ({restingBox (kApplePrint, -0.17, -0.12, 10.0),
+                      restingBox (kApplePrint, 0.16, -0.12, -35.0),
+                      restingBox (kSoyPrint, -0.15, 0.12, 70.0, on_side),
+                      restingBox (kSoyPrint, 0.17, 0.11, 160.0, on_side),
+                      restingBox (kSoyPrint, 0.0, 0.0, 95.0, on_side)});
+  mid::ObjectModels models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3, 4})};
+  ASSERT_TRUE (scene.merger().merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 5u);
+  // The merged model keeps box 2's frame. Box 0's axes x (0.12), y (0.09), z (0.04) are box 2's
+  // x, z and -y.
+  Eigen::Matrix3d flat_in_side;
+  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  for (const auto& instance : models[0].instances) {
+    const int b = scene.boxOf (instance.keypoints);
+    ASSERT_GE (b, 0);
+    Eigen::Isometry3d truth = scene.scene.boxes[static_cast<std::size_t> (b)].pose;
+    if (b < 2)
+      truth.linear() = truth.linear() * flat_in_side.transpose();
+    EXPECT_LT (rotationErrorModuloBox (instance.pose, truth), 3.0) << "box " << b;
+    EXPECT_LT (
+        (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
+            .norm(),
+        0.004f)
+        << "box " << b;
+  }
+}
+
+TEST (InstanceExtent, RefusesPixelsOutsideTheFrameOrWithoutAPoint)
+{
+  const Boxes scene (fourBoxes());
+  const auto& organized = *scene.surface.organized;
+  Eigen::Vector4f plane;
+  ASSERT_TRUE (mid::fitSupportPlane (organized, 0.01f, 0.2f, plane));
+  std::vector<pcl::Indices> surfaces;
+  const auto outside = static_cast<pcl::index_t> (organized.size());
+  EXPECT_FALSE (mid::growInstanceSurfaces (
+      organized, plane, {scene.seedsOn (0), {outside}}, 0.008f, 0.3f, 0.01f, surfaces));
+  ASSERT_EQ (surfaces.size(), 2u);
+  EXPECT_TRUE (surfaces[0].empty());
+
+  pcl::PointCloud<pcl::PointXYZ> holed = organized;
+  ASSERT_TRUE (mid::growInstanceSurfaces (
+      holed, plane, {scene.seedsOn (0)}, 0.008f, 0.3f, 0.01f, surfaces));
+  const auto hole = static_cast<std::size_t> (surfaces[0][surfaces[0].size() / 2]);
+  holed[hole].z = std::numeric_limits<float>::quiet_NaN();
+  mid::InstanceExtent extent;
+  EXPECT_FALSE (mid::fitInstanceBox (holed, plane, surfaces[0], extent));
+  EXPECT_TRUE (extent.surface.empty());
+
+  pcl::PointCloud<pcl::PointXYZ> unorganized = organized;
+  unorganized.height = 2;
+  EXPECT_FALSE (mid::fitSupportPlane (unorganized, 0.01f, 0.2f, plane));
 }
 
 TEST (InstanceExtent, FindsNoSupportPlaneBelowTheShareAskedFor)

@@ -249,8 +249,12 @@ struct DiscoveryParameters
     * show other faces than the first model's, which no descriptor links. Sizes agree when
     * each edge differs by at most the larger of size_tolerance (metres, >= 0) and
     * relative_size_tolerance (>= 0) times the edge. Two products of one size are merged too.
+    * The merged model's instances are posed by their boxes, so their poses are right only up
+    * to the box's symmetries (a half turn about an edge, a quarter turn of a square box).
     * Needs the organized frame (MultiInstanceDiscovery passes it). Seed-3 development frames:
-    * F1 0.786 -> 0.793, seed 2 0.780 -> 0.793 (doc/benchmark.md, session 25).
+    * F1 0.786 -> 0.793 (session 25) -> 0.804 (session 26: surfaces stopped at creases and
+    * split between touching copies, a refitted plane), seed 2 0.780 -> 0.793 -> 0.807
+    * (doc/benchmark.md).
     */
   ///@{
   bool merge_by_size = true;

@@ -18,11 +18,13 @@ namespace mid {
   * This step:
   *
   * 1. fits the frame's support plane (fitSupportPlane());
-  * 2. measures, for every instance, the box its object occupies on the plane, from the surface
-  *    connected to its keypoints (measureInstanceExtent()); a surface that reaches another
-  *    instance's keypoint (of any model) holds two objects and is not used;
+  * 2. measures, for every instance, the box its object occupies on the plane: the surfaces of
+  *    all instances grow at once from their keypoints (growInstanceSurfaces()), stop at
+  *    creases where two objects meet, and split a surface that still joins touching copies
+  *    between them; a box is fitted to each (fitInstanceBox());
   * 3. gives each model the size that most of its measured instances agree on (ties: the
-  *    instance with the larger surface), when at least `min_agreeing` do;
+  *    instance with the smaller surface, as a surface is more often too large, joined with
+  *    something, than too small), when at least `min_agreeing` do;
   * 4. merges two models whose sizes agree within the size tolerance, edge by edge, the smaller
   *    model into the larger: the boxes' frames (axes along the edges in ascending length)
   *    give the transform between the model frames, so the merged poses are those of the box,
@@ -30,7 +32,8 @@ namespace mid {
   *
   * Two products of one size (within the tolerance) are merged too: the step trades those for
   * the second models of one product, which are far more common on a table of several copies
-  * of one product. Touching copies whose surfaces join are not measured.
+  * of one product. The split of a join between touching copies follows their keypoints, not
+  * the seam: such copies are measured right only when their keypoints cover them.
   * Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
 class ModelSizeMerger
