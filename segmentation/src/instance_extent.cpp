@@ -98,19 +98,16 @@ inCrease (const pcl::PointCloud<pcl::PointXYZ>& organized, int pixel)
   const float z = organized[pixel].z;
   constexpr std::array<std::array<int, 2>, 4> kDirections = {
       {{0, 1}, {1, 0}, {1, 1}, {1, -1}}};
-  for (const auto& d : kDirections) {
+  return std::any_of (kDirections.begin(), kDirections.end(), [&] (const auto& d) {
     const int r0 = row - d[0] * kCreasePixels, c0 = column - d[1] * kCreasePixels;
     const int r1 = row + d[0] * kCreasePixels, c1 = column + d[1] * kCreasePixels;
     if (r0 < 0 || r1 >= height || std::min (c0, c1) < 0 || std::max (c0, c1) >= width)
-      continue;
+      return false;
     const float z0 = organized[r0 * width + c0].z;
     const float z1 = organized[r1 * width + c1].z;
-    if (!std::isfinite (z0) || !std::isfinite (z1))
-      continue;
-    if (z - 2.0f / (1.0f / z0 + 1.0f / z1) > kCreaseDepth)
-      return true;
-  }
-  return false;
+    return std::isfinite (z0) && std::isfinite (z1) &&
+           z - 2.0f / (1.0f / z0 + 1.0f / z1) > kCreaseDepth;
+  });
 }
 
 /** The value below which a share q of `values` lies (reorders them). */
