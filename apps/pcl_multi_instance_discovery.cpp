@@ -161,6 +161,9 @@ printHelp (const char* program)
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
+  line ("-max_chroma D",
+        "largest mean chromaticity difference of a verified pose, 2 = off",
+        static_cast<double> (d.max_chromaticity_difference));
   line ("-verify_radius R",
         "verification: surface compared around a keypoint, metres",
         static_cast<double> (d.verification_radius));
@@ -250,6 +253,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-guided_hypotheses", 1},
                                       {"-min_correlation", 1},
                                       {"-verify_radius", 1},
+                                      {"-max_chroma", 1},
                                       {"-leftover_desc_dist", 1},
                                       {"-leftover_margin", 1},
                                       {"-region_margin", 1},
@@ -356,6 +360,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
       parseNumber (argc, argv, "-min_correlation", p.min_photometric_correlation) &&
       parseNumber (argc, argv, "-verify_radius", p.verification_radius) &&
+      parseNumber (argc, argv, "-max_chroma", p.max_chromaticity_difference) &&
       parseNumber (argc, argv, "-guided_seed_dist", p.guided_seed_distance) &&
       parseNumber (argc, argv, "-guided_desc_dist", p.guided_descriptor_distance) &&
       parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&

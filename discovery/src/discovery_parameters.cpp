@@ -108,6 +108,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "verification_depth_tolerance",
              static_cast<double> (p.verification_depth_tolerance),
              "> 0");
+  c.require (p.max_chromaticity_difference > 0.0f,
+             "max_chromaticity_difference",
+             static_cast<double> (p.max_chromaticity_difference),
+             "> 0");
   c.require (p.min_photometric_correlation >= -1.0f &&
                  p.min_photometric_correlation <= 1.0f,
              "min_photometric_correlation",

@@ -200,8 +200,8 @@ groupWithTriplets (const DiscoveryParameters& p,
   return true;
 }
 
-/** The photometric verification on `surface` with the pipeline's radius and depth tolerance
-  * and the given minimum correlation.
+/** The photometric verification on `surface` with the pipeline's radius, depth tolerance and
+  * largest chromaticity difference, and the given minimum correlation.
   */
 PhotometricVerification
 makeVerification (const DiscoveryParameters& p,
@@ -213,6 +213,7 @@ makeVerification (const DiscoveryParameters& p,
   verification.setRadius (p.verification_radius);
   verification.setDepthTolerance (p.verification_depth_tolerance);
   verification.setMinCorrelation (min_correlation);
+  verification.setMaxChromaticityDifference (p.max_chromaticity_difference);
   return verification;
 }
 
@@ -346,6 +347,7 @@ searchGuidedInstances (const DiscoveryParameters& p,
   search.setInlierThreshold (p.inlier_threshold);
   search.setMinInliers (p.guided_min_inliers);
   search.setMinCorrelation (p.guided_min_correlation);
+  search.setMaxChromaticityDifference (p.max_chromaticity_difference);
   search.setCorrelationRadius (p.verification_radius);
   search.setDepthTolerance (p.verification_depth_tolerance);
   search.setMaxHypotheses (p.guided_hypotheses);
@@ -481,6 +483,8 @@ frameSurface (const DiscoveryParameters& p,
     return frame;
   frame.intensity =
       std::make_shared<const std::vector<float>> (greyLevels (*organized));
+  frame.chromaticity =
+      std::make_shared<const std::vector<Chromaticity>> (chromaticities (*organized));
   FramePinhole pinhole;
   if (fitFramePinhole (*points, pinhole))
     frame.pinhole = std::make_shared<const FramePinhole> (pinhole);

@@ -287,9 +287,13 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
   if (!(seed_distance_ > 0.0f) || !(guided_distance_ > 0.0f) ||
       !(search_radius_ > 0.0f) || !(inlier_threshold_ > 0.0f) ||
       !(depth_tolerance_ > 0.0f) || !(correlation_radius_ > 0.0f) ||
+      !(max_chromaticity_difference_ > 0.0f) ||
       !(min_correlation_ >= -1.0f && min_correlation_ <= 1.0f) || min_inliers_ < 3)
-    return "the distances, radii and tolerances must be positive, the correlation in "
-           "[-1, 1] and the minimum inliers at least 3";
+    return "the distances, radii, tolerances and the chromaticity difference must be "
+           "positive, the correlation in [-1, 1] and the minimum inliers at least 3";
+  if (surface_.chromaticity &&
+      surface_.chromaticity->size() != surface_.organized->size())
+    return "the keypoint surface's chromaticity must be one per pixel";
   const auto isKeypoint = [n] (pcl::index_t k) {
     return k >= 0 && static_cast<std::size_t> (k) < n;
   };
@@ -380,6 +384,8 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
   verification.setKeypointSurface (projected);
   verification.setRadius (correlation_radius_);
   verification.setDepthTolerance (depth_tolerance_);
+  verification.setMinCorrelation (min_correlation_);
+  verification.setMaxChromaticityDifference (max_chromaticity_difference_);
   const LandmarkBox box = computeLandmarkBox (model);
   ModelInstances copies = found_instances_;
   std::vector<std::size_t> on;
@@ -451,10 +457,8 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
     std::sort (link.source_indices.begin(), link.source_indices.end());
     std::sort (link.target_indices.begin(), link.target_indices.end());
     link.transformation = pose * instance.pose.inverse();
-    bool tested = false;
-    if (verification.correlation (link, tested) <
-            static_cast<double> (min_correlation_) ||
-        !tested)
+    const PhotometricVerification::Agreement agreement = verification.compare (link);
+    if (!agreement.correlation_tested || verification.rejects (agreement))
       continue;
     // The copy's keypoints leave the candidates: those matched, and those inside the
     // model's box placed there.

@@ -8,15 +8,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace mid {
 
 namespace {
 
-/** Grey-level pairs: x at a point's own pixel, y where it moved to. */
+/** Grey-level pairs: x at a point's own pixel, y where it moved to; and the chromaticity
+  * differences of the pairs where both pixels have a colour.
+  */
 struct GreyPairs : detail::PairedSums
 {
+  double colour_pairs = 0.0, chromaticity_difference = 0.0;
+
+  void
+  addColours (const Chromaticity& a, const Chromaticity& b)
+  {
+    if (!std::isfinite (a[0]) || !std::isfinite (b[0]))
+      return;
+    colour_pairs += 1.0;
+    chromaticity_difference += std::abs (a[0] - b[0]) + std::abs (a[1] - b[1]);
+  }
+
   /** True if both sides vary by more than one grey level (standard deviation): below that, a
     * uniform surface (or a frame without colour) cannot tell one pose from another.
     */
@@ -86,8 +100,12 @@ movedSurfacePairs (const KeypointSurface& surface,
         const pcl::PointXYZ& seen = cloud[there];
         // The same z on the pixel's ray: the same side of the camera, also in a frame that
         // looks down -z.
-        if (pcl::isXYZFinite (seen) && std::abs (seen.z - moved.z()) <= tolerance)
-          pairs.add (grey[own], grey[there]);
+        if (!pcl::isXYZFinite (seen) || std::abs (seen.z - moved.z()) > tolerance)
+          continue;
+        pairs.add (grey[own], grey[there]);
+        if (surface.chromaticity)
+          pairs.addColours ((*surface.chromaticity)[own],
+                            (*surface.chromaticity)[there]);
       }
   }
   return pairs;
@@ -120,6 +138,22 @@ greyLevels (const pcl::PointCloud<pcl::PointXYZRGB>& frame)
   return grey;
 }
 
+std::vector<Chromaticity>
+chromaticities (const pcl::PointCloud<pcl::PointXYZRGB>& frame, float min_brightness)
+{
+  std::vector<Chromaticity> shares;
+  shares.reserve (frame.size());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& p : frame) {
+    const float r = p.r, g = p.g, sum = r + g + static_cast<float> (p.b);
+    if (sum < min_brightness || !(sum > 0.0f))
+      shares.push_back ({nan, nan});
+    else
+      shares.push_back ({r / sum, g / sum});
+  }
+  return shares;
+}
+
 void
 PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)
 {
@@ -130,10 +164,13 @@ PhotometricVerification::setKeypointSurface (const KeypointSurface& surface)
 std::string
 PhotometricVerification::inputProblem() const
 {
-  if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
+  if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) ||
+      !(max_chromaticity_difference_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
       !(min_correlation_ <= 1.0f))
-    return "the radius (" + std::to_string (radius_) + ") and depth tolerance (" +
+    return "the radius (" + std::to_string (radius_) + "), depth tolerance (" +
            std::to_string (depth_tolerance_) +
+           ") and largest chromaticity difference (" +
+           std::to_string (max_chromaticity_difference_) +
            ") must be positive and the minimum correlation (" +
            std::to_string (min_correlation_) + ") in [-1, 1]";
   if (!isValidKeypointSurface (surface_, surface_.keypoint_pixels.size()))
@@ -144,6 +181,11 @@ PhotometricVerification::inputProblem() const
     return "the keypoint surface needs one grey level per pixel (" +
            std::to_string (surface_.intensity ? surface_.intensity->size() : 0) +
            " given for " + std::to_string (surface_.organized->size()) + " pixels)";
+  if (surface_.chromaticity &&
+      surface_.chromaticity->size() != surface_.organized->size())
+    return "the keypoint surface's chromaticity must be one per pixel (" +
+           std::to_string (surface_.chromaticity->size()) + " given for " +
+           std::to_string (surface_.organized->size()) + " pixels)";
   if (!has_pinhole_)
     return surface_.pinhole
                ? "the keypoint surface's pinhole projection needs finite, "
@@ -153,13 +195,13 @@ PhotometricVerification::inputProblem() const
   return {};
 }
 
-double
-PhotometricVerification::correlation (const TripletCluster& cluster, bool& tested) const
+PhotometricVerification::Agreement
+PhotometricVerification::compare (const TripletCluster& cluster) const
 {
-  tested = false;
+  Agreement agreement;
   if (!inputProblem().empty() ||
       !keypointsHavePixels (cluster, surface_.keypoint_pixels.size()))
-    return 0.0;
+    return agreement;
   const GreyPairs forward = movedSurfacePairs (surface_,
                                                pinhole_,
                                                cluster.source_indices,
@@ -173,9 +215,35 @@ PhotometricVerification::correlation (const TripletCluster& cluster, bool& teste
                                                 radius_,
                                                 depth_tolerance_);
   const auto enough = static_cast<double> (min_pairs_);
-  tested = forward.n >= enough && backward.n >= enough && forward.contrasted() &&
-           backward.contrasted();
-  return std::min (forward.correlation(), backward.correlation());
+  agreement.correlation = std::min (forward.correlation(), backward.correlation());
+  agreement.correlation_tested = forward.n >= enough && backward.n >= enough &&
+                                 forward.contrasted() && backward.contrasted();
+  agreement.chromaticity_tested = surface_.chromaticity &&
+                                  forward.colour_pairs >= enough &&
+                                  backward.colour_pairs >= enough;
+  if (agreement.chromaticity_tested)
+    agreement.chromaticity_difference =
+        (forward.chromaticity_difference + backward.chromaticity_difference) /
+        (forward.colour_pairs + backward.colour_pairs);
+  return agreement;
+}
+
+bool
+PhotometricVerification::rejects (const Agreement& agreement) const
+{
+  return (agreement.correlation_tested &&
+          agreement.correlation < static_cast<double> (min_correlation_)) ||
+         (agreement.chromaticity_tested &&
+          agreement.chromaticity_difference >
+              static_cast<double> (max_chromaticity_difference_));
+}
+
+double
+PhotometricVerification::correlation (const TripletCluster& cluster, bool& tested) const
+{
+  const Agreement agreement = compare (cluster);
+  tested = agreement.correlation_tested;
+  return agreement.correlation;
 }
 
 bool
@@ -193,12 +261,9 @@ PhotometricVerification::filter (const TripletClusters& clusters,
     PCL_ERROR ("[mid::PhotometricVerification::filter] %s.\n", problem.c_str());
     return false;
   }
-  for (const auto& cluster : clusters) {
-    bool tested = false;
-    const double c = correlation (cluster, tested);
-    if (!tested || c >= static_cast<double> (min_correlation_))
+  for (const auto& cluster : clusters)
+    if (!rejects (compare (cluster)))
       verified.push_back (cluster);
-  }
   return true;
 }
 

@@ -7,6 +7,9 @@
 #include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <random>
 
 namespace {
@@ -291,6 +294,85 @@ TEST (PhotometricVerification, GreyLevelsWeighTheChannelsLikeTheEye)
   EXPECT_NEAR (grey[2], 100.0f, 1e-3f);
 }
 
+TEST (PhotometricVerification, ChromaticityIsTheShareOfRedAndGreenWhereBrightEnough)
+{
+  pcl::PointCloud<pcl::PointXYZRGB> frame (3, 1);
+  frame[0].r = 200;
+  frame[0].g = frame[0].b = 100;
+  frame[1].r = frame[1].g = frame[1].b = 19; // 57 < 60: too dark
+  frame[2].g = 255;
+  const std::vector<mid::Chromaticity> shares = mid::chromaticities (frame);
+  ASSERT_EQ (shares.size(), 3u);
+  EXPECT_NEAR (shares[0][0], 0.5f, 1e-6f);
+  EXPECT_NEAR (shares[0][1], 0.25f, 1e-6f);
+  EXPECT_TRUE (std::isnan (shares[1][0]) && std::isnan (shares[1][1]));
+  EXPECT_NEAR (shares[2][0], 0.0f, 1e-6f);
+  EXPECT_NEAR (shares[2][1], 1.0f, 1e-6f);
+  EXPECT_FALSE (std::isnan (mid::chromaticities (frame, 50.0f)[1][0]));
+}
+
+TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
+{
+  // Box 1 carries box 0's print with the same grey levels but tinted (red up, blue down):
+  // grey levels alone take it for a copy, its colours do not.
+  const auto scene = threeBoxes();
+  PrintedFaces faces (scene);
+  pcl::PointCloud<pcl::PointXYZRGB> colour, tinted;
+  pcl::copyPointCloud (*scene.cloud, colour);
+  tinted = colour;
+  std::size_t recoloured = 0;
+  for (int v = 0; v < scene.frame.instances.rows; ++v)
+    for (int u = 0; u < scene.frame.instances.cols; ++u) {
+      if (scene.frame.instances.at<int> (v, u) != 1)
+        continue;
+      auto& p = tinted (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
+      const float grey = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
+      const float r = std::min (255.0f, 1.25f * grey), b = 0.5f * grey;
+      const float g =
+          std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
+      p.r = static_cast<std::uint8_t> (std::lround (r));
+      p.g = static_cast<std::uint8_t> (std::lround (g));
+      p.b = static_cast<std::uint8_t> (std::lround (b));
+      ++recoloured;
+    }
+  ASSERT_GT (recoloured, 1000u);
+  const mid::TripletCluster copies = faces.cluster (0, 1);
+  mid::PhotometricVerification verification;
+
+  faces.surface.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
+      mid::chromaticities (colour));
+  verification.setKeypointSurface (faces.surface);
+  const auto same = verification.compare (copies);
+  ASSERT_TRUE (same.correlation_tested && same.chromaticity_tested);
+  EXPECT_GT (same.correlation, 0.8);
+  EXPECT_LT (same.chromaticity_difference, 0.03);
+  EXPECT_FALSE (verification.rejects (same));
+
+  faces.surface.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
+      mid::chromaticities (tinted));
+  verification.setKeypointSurface (faces.surface);
+  const auto other = verification.compare (copies);
+  ASSERT_TRUE (other.correlation_tested && other.chromaticity_tested);
+  EXPECT_NEAR (
+      other.correlation, same.correlation, 1e-9); // the grey levels are the same
+  EXPECT_GT (other.chromaticity_difference, 0.1);
+  EXPECT_TRUE (verification.rejects (other));
+  mid::TripletClusters verified;
+  ASSERT_TRUE (verification.filter ({copies}, verified));
+  EXPECT_TRUE (verified.empty());
+
+  // Colours off (2 or more), or a frame without them: the grey levels decide alone.
+  verification.setMaxChromaticityDifference (2.0f);
+  ASSERT_TRUE (verification.filter ({copies}, verified));
+  EXPECT_EQ (verified.size(), 1u);
+  verification.setMaxChromaticityDifference (0.1f);
+  faces.surface.chromaticity = nullptr;
+  verification.setKeypointSurface (faces.surface);
+  EXPECT_FALSE (verification.compare (copies).chromaticity_tested);
+  ASSERT_TRUE (verification.filter ({copies}, verified));
+  EXPECT_EQ (verified.size(), 1u);
+}
+
 TEST (PhotometricVerification, KeepsAClusterTheFrameCannotTell)
 {
   // No table: the pose from box 0 onto a box moved far out of the view lands on no surface,
@@ -336,6 +418,10 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   mid::KeypointSurface short_grey = faces.surface;
   short_grey.intensity = std::make_shared<std::vector<float>> (100, 0.0f);
   EXPECT_TRUE (refuses (short_grey));
+  mid::KeypointSurface short_colour = faces.surface;
+  short_colour.chromaticity = std::make_shared<std::vector<mid::Chromaticity>> (
+      100, mid::Chromaticity{0.3f, 0.3f});
+  EXPECT_TRUE (refuses (short_colour));
   mid::KeypointSurface few_pixels = faces.surface;
   few_pixels.keypoint_pixels.resize (12); // the clusters' box-1 keypoints have no pixel
   EXPECT_TRUE (refuses (few_pixels));
@@ -361,4 +447,12 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   EXPECT_TRUE (refuses (faces.surface, 0.015f, 0.4f, 0.0f));
   EXPECT_TRUE (refuses (faces.surface, NAN));
   EXPECT_FALSE (refuses (faces.surface));
+  for (const float chroma : {0.0f, float (NAN)}) {
+    mid::PhotometricVerification verification;
+    verification.setKeypointSurface (faces.surface);
+    verification.setMaxChromaticityDifference (chroma);
+    mid::TripletClusters verified = stale;
+    EXPECT_FALSE (verification.filter (clusters, verified));
+    EXPECT_TRUE (verified.empty());
+  }
 }

@@ -36,7 +36,8 @@ namespace mid {
   *    of one of the landmark's descriptors; the pose is refitted on those matches, and those
   *    within the inlier threshold must number at least the minimum.
   * 4. **Grey levels.** The surface around the instance's keypoints, moved by the refitted
-  *    motion, must correlate with the frame there, and back (PhotometricVerification).
+  *    motion, must correlate with the frame there, and back, and have its colours where the
+  *    keypoint surface holds them (PhotometricVerification).
   *
   * Hypotheses are tried from the most similar pair of descriptors on; an accepted instance's
   * keypoints, and the candidates inside the model's box placed there, leave the candidates. A
@@ -234,6 +235,23 @@ public:
   }
   ///@}
 
+  /** \brief Largest mean chromaticity difference of the compared surface, where the keypoint
+    * surface holds the chromaticity (PhotometricVerification::setMaxChromaticityDifference();
+    * default 0.1).
+    */
+  ///@{
+  void
+  setMaxChromaticityDifference (float difference)
+  {
+    max_chromaticity_difference_ = difference;
+  }
+  float
+  getMaxChromaticityDifference () const
+  {
+    return max_chromaticity_difference_;
+  }
+  ///@}
+
   /** \brief Radius of the grey-level comparison around each keypoint (metres, default
     * 0.015).
     */
@@ -296,6 +314,7 @@ private:
   std::size_t min_inliers_ = 6;
   float depth_tolerance_ = 0.01f;
   float min_correlation_ = 0.6f;
+  float max_chromaticity_difference_ = 0.1f;
   float correlation_radius_ = 0.015f;
   std::size_t max_hypotheses_ = 500;
 };

@@ -30,6 +30,15 @@ namespace mid {
   * than the minimum count either way (everything moved is occluded, say), or grey levels that
   * do not vary (a uniform surface, a frame without colour).
   *
+  * Grey levels alone confuse two products whose prints share dark small text on a light
+  * ground. Where the keypoint surface also holds each pixel's chromaticity
+  * (KeypointSurface::chromaticity), the same pairs compare colours too (not in the paper):
+  * the mean difference of their chromaticities (|dr| + |dg| of the red and green shares)
+  * is near 0 on two copies of one print, whatever the shading, and a cluster whose pairs
+  * differ by more than the maximum is rejected however well its grey levels correlate.
+  * Pairs where either pixel is too dark to have a colour do not count; with fewer colour
+  * pairs than the minimum count, the colours do not decide.
+  *
   * The camera need not be given: unless the keypoint surface holds the projection
   * (KeypointSurface::pinhole), it is fitted to the organized frame (fitFramePinhole()).
   */
@@ -94,6 +103,23 @@ public:
   }
   ///@}
 
+  /** \brief The largest mean chromaticity difference (|dr| + |dg|) of a kept cluster's
+    * pairs, both ways together, where the keypoint surface holds the chromaticity (default
+    * 0.1; 2 or more: colours never reject, as the difference stays below 2).
+    */
+  ///@{
+  void
+  setMaxChromaticityDifference (float difference)
+  {
+    max_chromaticity_difference_ = difference;
+  }
+  float
+  getMaxChromaticityDifference () const
+  {
+    return max_chromaticity_difference_;
+  }
+  ///@}
+
   /** \brief Fewer pairs than this, either way, keep the cluster untested (default 30). */
   ///@{
   void
@@ -113,17 +139,49 @@ public:
     * surface's keypoint pixels)
     * \param[out] verified the kept clusters, in their input order (cleared on failure)
     * \return false (with a PCL_ERROR) if the keypoint surface is not valid for the clusters'
-    * keypoints (isValidKeypointSurface()), has no grey level per pixel, if the frame has no
-    * projection (hasProjection()), or a parameter is out of range (radius and tolerance > 0,
+    * keypoints (isValidKeypointSurface()), has no grey level per pixel (or a chromaticity
+    * that is not one per pixel), if the frame has no projection (hasProjection()), or a
+    * parameter is out of range (radius, tolerance and chromaticity difference > 0,
     * correlation in [-1, 1])
     */
   bool
   filter (const TripletClusters& clusters, TripletClusters& verified) const;
 
+  /** \brief What the frame says about one cluster's pose (compare()). */
+  struct Agreement
+  {
+    /** \brief The smaller of the two grey-level correlations (P onto Q and back). */
+    double correlation = 0.0;
+    /** \brief Both directions had the minimum number of pairs and grey levels that vary. */
+    bool correlation_tested = false;
+    /** \brief Mean chromaticity difference (|dr| + |dg|) of the pairs of both directions
+      * where both pixels have a colour.
+      */
+    double chromaticity_difference = 0.0;
+    /** \brief The surface holds the chromaticity and both directions had the minimum number
+      * of colour pairs.
+      */
+    bool chromaticity_tested = false;
+  };
+
+  /** \brief Compare the surface around a cluster's point sets with the frame where its pose
+    * moves them, both ways.
+    * \return all untested where filter() would refuse the input
+    */
+  Agreement
+  compare (const TripletCluster& cluster) const;
+
+  /** \brief True if the agreement rules the pose out: a tested correlation below the
+    * minimum, or tested colours that differ by more than the maximum. filter() keeps the
+    * clusters this does not reject.
+    */
+  bool
+  rejects (const Agreement& agreement) const;
+
   /** \brief The smaller of a cluster's two correlations (P onto Q and back), and whether the
     * frame could tell: both directions had the minimum number of pairs, and grey levels that
     * vary (a uniform surface, or a frame without colour, tells nothing). For reports and
-    * tests; filter() decides with it.
+    * tests (compare() gives the colours too).
     * \return 0, untested, where filter() would refuse the input
     */
   double
@@ -153,6 +211,7 @@ private:
   float radius_ = 0.015f;
   float depth_tolerance_ = 0.01f;
   float min_correlation_ = 0.4f;
+  float max_chromaticity_difference_ = 0.1f;
   std::size_t min_pairs_ = 30;
 };
 
@@ -161,5 +220,14 @@ private:
   */
 std::vector<float>
 greyLevels (const pcl::PointCloud<pcl::PointXYZRGB>& frame);
+
+/** \brief The chromaticity of each point of a colour frame, in its order
+  * (KeypointSurface::chromaticity): its red and green shares of r + g + b, or NaN where
+  * r + g + b is below `min_brightness` (0 to 765), too dark for the shares to be more than
+  * the sensor's noise.
+  */
+std::vector<Chromaticity>
+chromaticities (const pcl::PointCloud<pcl::PointXYZRGB>& frame,
+                float min_brightness = 60.0f);
 
 } // namespace mid

@@ -6,10 +6,16 @@
 #include <pcl/point_types.h>
 #include <pcl/types.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
 namespace mid {
+
+/** \brief A pixel's chromaticity: its red and green shares of r + g + b (the colour without
+  * its brightness, which shading changes and a white light does not tint).
+  */
+using Chromaticity = std::array<float, 2>;
 
 /** \brief The frame's organized points and the pixel each keypoint was found at: what a
   * keypoint-only step needs to look at the surface between two keypoints.
@@ -27,6 +33,11 @@ struct KeypointSurface
     * (PhotometricVerification).
     */
   std::shared_ptr<const std::vector<float>> intensity = nullptr;
+  /** \brief The chromaticity of each pixel of `organized` (chromaticities(); NaN where the
+    * pixel is too dark to tell), or null: the photometric verification then compares grey
+    * levels only (PhotometricVerification::setMaxChromaticityDifference()).
+    */
+  std::shared_ptr<const std::vector<Chromaticity>> chromaticity = nullptr;
   /** \brief The projection of `organized` onto its pixels when known (the camera's intrinsics,
     * or a fit kept for several steps), or null: the steps that project points
     * (PhotometricVerification) then fit it with fitFramePinhole().
