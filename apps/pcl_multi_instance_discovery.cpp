@@ -139,6 +139,17 @@ printHelp (const char* program)
   line ("-guided_hypotheses N",
         "guided search: seed matches tried per model",
         static_cast<double> (d.guided_hypotheses));
+  line ("-patch_radius R",
+        "patches: keypoints within R metres of the patch's centre",
+        static_cast<double> (d.patch_radius));
+  line ("-patch_inliers N",
+        "patches: fewest guided inliers of a copy",
+        static_cast<double> (d.patch_min_inliers));
+  line ("-patch_corr C",
+        "patches: smallest grey-level correlation of a copy, each way",
+        static_cast<double> (d.patch_min_correlation));
+  line (
+      "-max_patches N", "patches tried per frame", static_cast<double> (d.max_patches));
   line ("-split_corr C",
         "instances of one model alike at this grey-level correlation, each way",
         static_cast<double> (d.split_min_correlation));
@@ -195,6 +206,10 @@ printHelp (const char* program)
               "(the\n");
   print_info ("                      paper's behaviour)\n");
   print_info (
+      "  -no_patches         no models from patches of the keypoints no instance "
+      "explains\n");
+  print_info ("                      (the paper's behaviour)\n");
+  print_info (
       "  -split              split a model whose instances fall into groups that "
       "do not\n");
   print_info ("                      look alike (off by default, as in the paper)\n");
@@ -236,6 +251,11 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_leftovers", 0},
                                       {"-no_verification", 0},
                                       {"-no_guided", 0},
+                                      {"-no_patches", 0},
+                                      {"-patch_radius", 1},
+                                      {"-patch_inliers", 1},
+                                      {"-patch_corr", 1},
+                                      {"-max_patches", 1},
                                       {"-split", 0},
                                       {"-no_surface", 0},
                                       {"-surface_step", 1},
@@ -328,6 +348,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
+  p.patch_discovery = !pcl::console::find_switch (argc, argv, "-no_patches");
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
@@ -365,6 +386,10 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-guided_desc_dist", p.guided_descriptor_distance) &&
       parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&
       parseNumber (argc, argv, "-guided_corr", p.guided_min_correlation) &&
+      parseNumber (argc, argv, "-patch_radius", p.patch_radius) &&
+      parseNumber (argc, argv, "-patch_inliers", p.patch_min_inliers) &&
+      parseNumber (argc, argv, "-patch_corr", p.patch_min_correlation) &&
+      parseNumber (argc, argv, "-max_patches", p.max_patches) &&
       parseNumber (argc, argv, "-guided_hypotheses", p.guided_hypotheses) &&
       parseNumber (argc, argv, "-split_corr", p.split_min_correlation) &&
       parseNumber (argc, argv, "-surface_step", p.surface_sample_step) &&

@@ -185,6 +185,34 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "guided_hypotheses",
              static_cast<double> (p.guided_hypotheses),
              ">= 1");
+  c.require (p.patch_radius > 0.0f && std::isfinite (p.patch_radius),
+             "patch_radius",
+             static_cast<double> (p.patch_radius),
+             "finite and > 0");
+  c.require (p.patch_min_keypoints >= 1,
+             "patch_min_keypoints",
+             static_cast<double> (p.patch_min_keypoints),
+             ">= 1");
+  c.require (p.patch_margin >= 0.0f && std::isfinite (p.patch_margin),
+             "patch_margin",
+             static_cast<double> (p.patch_margin),
+             "finite and >= 0");
+  c.require (p.patch_min_inliers >= 3,
+             "patch_min_inliers",
+             static_cast<double> (p.patch_min_inliers),
+             ">= 3");
+  c.require (p.patch_min_correlation >= -1.0f && p.patch_min_correlation <= 1.0f,
+             "patch_min_correlation",
+             static_cast<double> (p.patch_min_correlation),
+             "in [-1, 1]");
+  c.require (p.patch_drop_inliers >= 3,
+             "patch_drop_inliers",
+             static_cast<double> (p.patch_drop_inliers),
+             ">= 3");
+  c.require (p.patch_hypotheses >= 1,
+             "patch_hypotheses",
+             static_cast<double> (p.patch_hypotheses),
+             ">= 1");
   c.require (p.split_min_correlation >= -1.0f && p.split_min_correlation <= 1.0f,
              "split_min_correlation",
              static_cast<double> (p.split_min_correlation),

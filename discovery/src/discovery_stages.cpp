@@ -13,6 +13,7 @@
 #include <mid/segmentation/appearance_model_splitter.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/surface_gap.h>
@@ -324,19 +325,22 @@ markInstances (const KeypointCloud& keypoints,
   }
 }
 
-/** Look for more instances of each model from single matches
-  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
-  * the frame, its grey levels and the image keypoints are known.
+/** True if the guided search can run: the frame, its grey levels and projection, and one
+  * image keypoint per keypoint.
   */
 bool
-searchGuidedInstances (const DiscoveryParameters& p,
-                       const KeypointSurface& surface,
-                       DiscoveryResult& result)
+canSearchGuided (const KeypointSurface& surface, const DiscoveryResult& result)
 {
-  if (!p.guided_search || !surface.organized || !surface.intensity ||
-      !surface.pinhole || result.image_keypoints.size() != result.keypoints->size() ||
-      result.models.empty())
-    return true;
+  return surface.organized && surface.intensity && surface.pinhole &&
+         result.image_keypoints.size() == result.keypoints->size();
+}
+
+/** The guided search on the frame's keypoints with the pipeline's settings. */
+GuidedInstanceSearch
+makeGuidedSearch (const DiscoveryParameters& p,
+                  const KeypointSurface& surface,
+                  const DiscoveryResult& result)
+{
   GuidedInstanceSearch search;
   search.setInputKeypoints (result.keypoints);
   search.setInputDescriptors (result.descriptors);
@@ -351,6 +355,21 @@ searchGuidedInstances (const DiscoveryParameters& p,
   search.setCorrelationRadius (p.verification_radius);
   search.setDepthTolerance (p.verification_depth_tolerance);
   search.setMaxHypotheses (p.guided_hypotheses);
+  return search;
+}
+
+/** Look for more instances of each model from single matches
+  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
+  * the frame, its grey levels and the image keypoints are known.
+  */
+bool
+searchGuidedInstances (const DiscoveryParameters& p,
+                       const KeypointSurface& surface,
+                       DiscoveryResult& result)
+{
+  if (!p.guided_search || !canSearchGuided (surface, result) || result.models.empty())
+    return true;
+  GuidedInstanceSearch search = makeGuidedSearch (p, surface, result);
   for (auto& model : result.models) {
     std::vector<bool> taken (result.keypoints->size(), false);
     markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
@@ -368,6 +387,134 @@ searchGuidedInstances (const DiscoveryParameters& p,
       return false;
     addFoundInstances (p, result, found, model);
   }
+  return true;
+}
+
+/** A model of the keypoints of `patch` with one instance where they lie (identity pose). */
+ObjectModel
+patchModel (const DiscoveryResult& result, const pcl::Indices& patch)
+{
+  ObjectModel model;
+  ModelInstance own;
+  for (const pcl::index_t k : patch) {
+    const auto landmark = static_cast<int> (model.landmarks.size());
+    own.keypoints.push_back (k);
+    own.landmarks.push_back (landmark);
+    model.descriptor_landmarks.push_back (landmark);
+    model.landmarks.push_back ((*result.keypoints)[static_cast<std::size_t> (k)]);
+    model.descriptors.push_back ((*result.descriptors)[static_cast<std::size_t> (k)]);
+  }
+  model.instances.push_back (std::move (own));
+  updateModelDiameter (model);
+  return model;
+}
+
+/** True if `model` matches one of `models` on at least `min_inliers` RANSAC inliers. */
+bool
+matchesAnyModel (const DiscoveryParameters& p,
+                 const ObjectModel& model,
+                 const ObjectModels& models,
+                 std::size_t min_inliers,
+                 bool& matches)
+{
+  matches = false;
+  const auto shared = std::make_shared<const ObjectModel> (model);
+  for (const auto& other : models) {
+    auto points = pcl::make_shared<KeypointCloud>();
+    modelAsKeypoints (other, *points);
+    ModelInstanceDetector detector = makeDetector (p, shared);
+    detector.setInputKeypoints (points);
+    detector.setInputDescriptors (
+        pcl::make_shared<SIFTDescriptorCloud> (other.descriptors));
+    detector.setMaxInstances (1);
+    detector.setMinInliers (min_inliers);
+    ModelInstances found;
+    if (!detector.detect (found))
+      return false;
+    if (!found.empty()) {
+      matches = true;
+      return true;
+    }
+  }
+  return true;
+}
+
+/** Models from patches of the keypoints no instance explains
+  * (DiscoveryParameters::patch_discovery), when the guided search can run; times the
+  * "patches" stage either way.
+  */
+bool
+discoverFromPatches (const DiscoveryParameters& p,
+                     const KeypointSurface& surface,
+                     DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.patch_discovery && canSearchGuided (surface, result)) {
+    const KeypointCloud& keypoints = *result.keypoints;
+    GuidedInstanceSearch search = makeGuidedSearch (p, surface, result);
+    search.setMinInliers (p.patch_min_inliers);
+    search.setMinCorrelation (p.patch_min_correlation);
+    search.setMaxHypotheses (p.patch_hypotheses);
+    const std::size_t first_new = result.models.size();
+    std::vector<bool> tried (keypoints.size(), false);
+    for (std::size_t round = 0; round < p.max_patches; ++round) {
+      std::vector<bool> taken (keypoints.size(), false), near (keypoints.size(), false);
+      markInstances (keypoints, result.models, p.leftover_margin, taken);
+      markInstances (keypoints, result.models, p.patch_margin, near);
+      std::vector<bool> free (keypoints.size());
+      for (std::size_t k = 0; k < keypoints.size(); ++k)
+        free[k] = !near[k] && !tried[k];
+      pcl::Indices patch;
+      if (!densestKeypointPatch (
+              keypoints, free, p.patch_radius, p.patch_min_keypoints, patch))
+        return false;
+      if (patch.empty())
+        break;
+      for (const pcl::index_t k : patch)
+        tried[static_cast<std::size_t> (k)] = true;
+      // Copies are looked for beyond the patch, among the keypoints no instance has.
+      const Eigen::Vector3f centre =
+          keypoints[static_cast<std::size_t> (patch.front())].getVector3fMap();
+      pcl::Indices candidates;
+      for (std::size_t k = 0; k < keypoints.size(); ++k)
+        if (!taken[k] &&
+            (keypoints[k].getVector3fMap() - centre).norm() >= p.patch_radius)
+          candidates.push_back (static_cast<pcl::index_t> (k));
+      ObjectModel model = patchModel (result, patch);
+      ModelInstances copies = model.instances;
+      for (const auto& other : result.models)
+        copies.insert (copies.end(), other.instances.begin(), other.instances.end());
+      search.setCandidates (candidates);
+      search.setFoundInstances (copies);
+      ModelInstances found;
+      if (!search.search (model, found))
+        return false;
+      if (found.empty())
+        continue;
+      addFoundInstances (p, result, found, model);
+      bool related = false;
+      if (!matchesAnyModel (p, model, result.models, p.patch_drop_inliers, related))
+        return false;
+      const std::size_t before = result.models.size();
+      result.models.push_back (std::move (model));
+      // Like another model but not merged with it: a second model of its product, or
+      // another product's print; dropped.
+      if (related && !mergeMatchingModels (p, keypoints, result.models, before))
+        return false;
+      if (related && result.models.size() > before)
+        result.models.pop_back();
+    }
+    if (result.models.size() > first_new) {
+      if (p.merge_models &&
+          !mergeMatchingModels (p, keypoints, result.models, first_new))
+        return false;
+      if (p.merge_through_regions && !mergeThroughRegions (p, result))
+        return false;
+      if (p.resolve_overlaps)
+        resolveOverlaps (p, keypoints, result.models);
+    }
+  }
+  result.timing_ms.emplace_back ("patches", watch.getTime());
   return true;
 }
 
@@ -442,6 +589,7 @@ discoverLeftovers (const DiscoveryParameters& p,
   selectLeftovers (p, result, leftovers, back);
   DiscoveryParameters second = p;
   second.discover_leftovers = false;
+  second.patch_discovery = false;
   second.max_descriptor_distance = p.leftover_descriptor_distance;
   if (!runStages (second, leftovers, surface, frame))
     return false;
@@ -643,7 +791,7 @@ runStages (const DiscoveryParameters& p,
   if (p.discover_leftovers && !discoverLeftovers (p, surface, frame, result))
     return false;
   result.timing_ms.emplace_back ("leftovers", watch.getTime());
-  return true;
+  return discoverFromPatches (p, keypoint_surface, result);
 }
 
 } // namespace

@@ -78,6 +78,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "modeling",
                             "detection",
                             "leftovers",
+                            "patches",
                             "surface",
                             "size_merge",
                             "total"})

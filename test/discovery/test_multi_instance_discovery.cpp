@@ -128,6 +128,7 @@ TEST (MultiInstanceDiscovery, VerifiesEveryClusterByTheLookOfTheSurface)
   mid::DiscoveryParameters strict;
   strict.min_photometric_correlation = 1.0f;
   strict.discover_leftovers = false;
+  strict.patch_discovery = false;
   discovery.setParameters (strict);
   mid::DiscoveryResult rejected;
   ASSERT_TRUE (discovery.discover (rejected));
@@ -215,6 +216,42 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
   ASSERT_EQ (result.models.size(), 1u);
   const auto boxes = boxesOf (scene, result, result.models[0]);
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
+}
+
+TEST (MultiInstanceDiscovery, FindsCopiesFromAPatchWhereNoClusterForms)
+{
+  // No cluster can reach its minimum size: only a patch of keypoints taken as a model, and
+  // the guided search from it, can find the two cookie boxes; the juice box stays alone.
+  const auto scene = mid::test::renderBoxes ({
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.15, -0.08, 0.85, 10.0, 10.0)},
+      {kJuice, {0.12, 0.12, 0.04}, boxPose (0.14, -0.10, 0.88, 30.0, -15.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.12, 0.13, 0.82, -50.0, 20.0)},
+  });
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters no_clusters;
+  no_clusters.min_cluster_size = 100000;
+  no_clusters.patch_discovery = false;
+  discovery.setParameters (no_clusters);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  EXPECT_TRUE (result.models.empty());
+
+  no_clusters.patch_discovery = true;
+  discovery.setParameters (no_clusters);
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto boxes = boxesOf (scene, result, result.models.front());
+  ASSERT_EQ (boxes.size(), 2u);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 2}));
+  expectRelativePosesMatch (scene, result.models.front(), boxes, 2.0, 0.005);
+  // Timed as its own stage, after the second round.
+  std::vector<std::string> stages;
+  for (const auto& stage : result.timing_ms)
+    stages.push_back (stage.first);
+  const auto leftovers = std::find (stages.begin(), stages.end(), "leftovers");
+  ASSERT_GE (stages.end() - leftovers, 2);
+  EXPECT_EQ (*(leftovers + 1), "patches");
 }
 
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)

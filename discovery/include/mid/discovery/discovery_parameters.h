@@ -220,6 +220,30 @@ struct DiscoveryParameters
   float guided_min_correlation = 0.6f;
   std::size_t guided_hypotheses = 500;
   ///@}
+  /** \brief After the second round, models from patches of the keypoints no instance
+    * explains (not in the paper): where copies share too little surface for the triplets (a
+    * few right matches, not 14 poses), the densest patch of keypoints farther than
+    * patch_margin (metres, >= 0) from every instance's box (densestKeypointPatch(): at least
+    * patch_min_keypoints, >= 1, within patch_radius, > 0) becomes a model with one instance,
+    * and the guided search looks for more copies of it (with patch_min_inliers, >= 3, and
+    * patch_min_correlation, in [-1, 1]: stricter than the guided search's, since a patch has
+    * no second copy to vouch for it; the most similar patch_hypotheses, >= 1, seed matches). A patch model that matches another model on
+    * patch_drop_inliers (>= 3) or more RANSAC inliers but does not merge with it is dropped;
+    * the others merge as the second round's do. Up to max_patches patches per frame. Needs
+    * the organized colour frame and the image keypoints. Chosen on the development frames
+    * (doc/benchmark.md, session 27).
+    */
+  ///@{
+  bool patch_discovery = true;
+  float patch_radius = 0.05f;
+  std::size_t patch_min_keypoints = 8;
+  float patch_margin = 0.04f;
+  std::size_t patch_min_inliers = 7;
+  float patch_min_correlation = 0.7f;
+  std::size_t patch_drop_inliers = 3;
+  std::size_t patch_hypotheses = 100;
+  std::size_t max_patches = 10;
+  ///@}
   /** \brief After the detection, in each round, split a model whose instances fall into
     * groups that do not look alike (not in the paper; AppearanceModelSplitter): two instances
     * are alike when the grey levels around their keypoints, moved by their relative pose,
