@@ -172,9 +172,10 @@ printHelp (const char* program)
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
-  line ("-max_chroma D",
-        "largest mean chromaticity difference of a verified pose, 2 = off",
-        static_cast<double> (d.max_chromaticity_difference));
+  line (
+      "-max_chroma D",
+      "largest difference of the mean colours (chromaticity) a pose compares, 2 = off",
+      static_cast<double> (d.max_chromaticity_difference));
   line ("-verify_radius R",
         "verification: surface compared around a keypoint, metres",
         static_cast<double> (d.verification_radius));

@@ -20,7 +20,9 @@ namespace {
   */
 struct GreyPairs : detail::PairedSums
 {
-  double colour_pairs = 0.0, chromaticity_difference = 0.0;
+  double colour_pairs = 0.0;
+  /** Sums of the red and green shares at the own pixels and where they moved to. */
+  double own_red = 0.0, own_green = 0.0, moved_red = 0.0, moved_green = 0.0;
 
   void
   addColours (const Chromaticity& a, const Chromaticity& b)
@@ -28,7 +30,10 @@ struct GreyPairs : detail::PairedSums
     if (!std::isfinite (a[0]) || !std::isfinite (b[0]))
       return;
     colour_pairs += 1.0;
-    chromaticity_difference += std::abs (a[0] - b[0]) + std::abs (a[1] - b[1]);
+    own_red += a[0];
+    own_green += a[1];
+    moved_red += b[0];
+    moved_green += b[1];
   }
 
   /** True if both sides vary by more than one grey level (standard deviation): below that, a
@@ -221,10 +226,19 @@ PhotometricVerification::compare (const TripletCluster& cluster) const
   agreement.chromaticity_tested = surface_.chromaticity &&
                                   forward.colour_pairs >= enough &&
                                   backward.colour_pairs >= enough;
-  if (agreement.chromaticity_tested)
+  if (agreement.chromaticity_tested) {
+    // The mean colour of one side against the other's, over both directions: a pixel or two
+    // of misregistration between colour and depth moves single pairs across print edges, not
+    // the means.
+    const double n = forward.colour_pairs + backward.colour_pairs;
     agreement.chromaticity_difference =
-        (forward.chromaticity_difference + backward.chromaticity_difference) /
-        (forward.colour_pairs + backward.colour_pairs);
+        std::abs (forward.own_red + backward.moved_red - forward.moved_red -
+                  backward.own_red) /
+            n +
+        std::abs (forward.own_green + backward.moved_green - forward.moved_green -
+                  backward.own_green) /
+            n;
+  }
   return agreement;
 }
 

@@ -313,7 +313,7 @@ TEST (PhotometricVerification, ChromaticityIsTheShareOfRedAndGreenWhereBrightEno
 
 TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
 {
-  // Box 1 carries box 0's print with the same grey levels but tinted (red up, blue down):
+  // Box 1 carries box 0's print with the same grey levels but tinted (blue up, red down):
   // grey levels alone take it for a copy, its colours do not.
   const auto scene = threeBoxes();
   PrintedFaces faces (scene);
@@ -327,7 +327,7 @@ TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
         continue;
       auto& p = tinted (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
       const float grey = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
-      const float r = std::min (255.0f, 1.25f * grey), b = 0.5f * grey;
+      const float r = 0.5f * grey, b = std::min (255.0f, 1.6f * grey);
       const float g =
           std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
       p.r = static_cast<std::uint8_t> (std::lround (r));

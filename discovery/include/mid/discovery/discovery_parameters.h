@@ -106,8 +106,8 @@ struct DiscoveryParameters
   float verification_depth_tolerance = 0.01f;
   /** \brief The smallest grey-level correlation of a kept cluster, each way (in [-1, 1]). */
   float min_photometric_correlation = 0.4f;
-  /** \brief The largest mean chromaticity difference (|dr| + |dg| of the red and green
-    * shares) of the surface a pose compares, for the verified clusters, the guided search and
+  /** \brief The largest difference of the mean chromaticities (|dr| + |dg| of the red and
+    * green shares) of the two sides of the surface a pose compares, for the verified clusters, the guided search and
     * the patches (> 0; 2 or more: colours never reject; not in the paper: grey levels alone
     * confuse two products whose prints share small dark text on a light ground, see
     * PhotometricVerification::setMaxChromaticityDifference()).

@@ -235,9 +235,9 @@ public:
   }
   ///@}
 
-  /** \brief Largest mean chromaticity difference of the compared surface, where the keypoint
-    * surface holds the chromaticity (PhotometricVerification::setMaxChromaticityDifference();
-    * default 0.1).
+  /** \brief Largest difference of the mean chromaticities of the compared surfaces, where
+    * the keypoint surface holds the chromaticity
+    * (PhotometricVerification::setMaxChromaticityDifference(); default 0.1).
     */
   ///@{
   void

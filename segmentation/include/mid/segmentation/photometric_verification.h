@@ -33,9 +33,12 @@ namespace mid {
   * Grey levels alone confuse two products whose prints share dark small text on a light
   * ground. Where the keypoint surface also holds each pixel's chromaticity
   * (KeypointSurface::chromaticity), the same pairs compare colours too (not in the paper):
-  * the mean difference of their chromaticities (|dr| + |dg| of the red and green shares)
-  * is near 0 on two copies of one print, whatever the shading, and a cluster whose pairs
-  * differ by more than the maximum is rejected however well its grey levels correlate.
+  * the mean chromaticity of one side against that of the other (|dr| + |dg| of the red and
+  * green shares) is near 0 on two copies of one print, whatever the shading, and a cluster
+  * whose sides differ by more than the maximum is rejected however well its grey levels
+  * correlate. Means, not pixel by pixel: on a real Kinect frame the colour lies a pixel or
+  * two off the depth, which moves single pairs across the print's edges (pixel by pixel,
+  * copies of the IC-BIN juice carton differed by 0.1 to 0.2; their means by less than 0.05).
   * Pairs where either pixel is too dark to have a colour do not count; with fewer colour
   * pairs than the minimum count, the colours do not decide.
   *
@@ -103,9 +106,10 @@ public:
   }
   ///@}
 
-  /** \brief The largest mean chromaticity difference (|dr| + |dg|) of a kept cluster's
-    * pairs, both ways together, where the keypoint surface holds the chromaticity (default
-    * 0.1; 2 or more: colours never reject, as the difference stays below 2).
+  /** \brief The largest difference (|dr| + |dg|) between the mean chromaticities of a kept
+    * cluster's two sides, both ways together, where the keypoint surface holds the
+    * chromaticity (default 0.1; 2 or more: colours never reject, as the difference stays
+    * below 2).
     */
   ///@{
   void
@@ -154,8 +158,8 @@ public:
     double correlation = 0.0;
     /** \brief Both directions had the minimum number of pairs and grey levels that vary. */
     bool correlation_tested = false;
-    /** \brief Mean chromaticity difference (|dr| + |dg|) of the pairs of both directions
-      * where both pixels have a colour.
+    /** \brief |dr| + |dg| between the mean chromaticities of the two sides, over the pairs
+      * of both directions where both pixels have a colour.
       */
     double chromaticity_difference = 0.0;
     /** \brief The surface holds the chromaticity and both directions had the minimum number
