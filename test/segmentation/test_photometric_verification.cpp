@@ -326,7 +326,9 @@ TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
       if (scene.frame.instances.at<int> (v, u) != 1)
         continue;
       auto& p = tinted (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
-      const float grey = 0.299f * p.r + 0.587f * p.g + 0.114f * p.b;
+      const float grey = 0.299f * static_cast<float> (p.r) +
+                         0.587f * static_cast<float> (p.g) +
+                         0.114f * static_cast<float> (p.b);
       const float r = 0.5f * grey, b = std::min (255.0f, 1.6f * grey);
       const float g =
           std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
