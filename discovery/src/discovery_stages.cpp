@@ -626,8 +626,8 @@ frameSurface (const DiscoveryParameters& p,
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  if (!p.verify_clusters && !p.guided_search && !p.split_by_appearance &&
-      !p.surface_refinement)
+  if (!p.verify_clusters && !p.guided_search && !p.patch_discovery &&
+      !p.split_by_appearance && !p.surface_refinement)
     return frame;
   frame.intensity =
       std::make_shared<const std::vector<float>> (greyLevels (*organized));
@@ -639,7 +639,7 @@ frameSurface (const DiscoveryParameters& p,
   else
     PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
               "(not in its camera's coordinates?): no cluster verification, guided "
-              "instance search, appearance split or surface refinement.\n");
+              "instance search, patches, appearance split or surface refinement.\n");
   return frame;
 }
 

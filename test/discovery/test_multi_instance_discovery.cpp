@@ -252,6 +252,16 @@ TEST (MultiInstanceDiscovery, FindsCopiesFromAPatchWhereNoClusterForms)
   const auto leftovers = std::find (stages.begin(), stages.end(), "leftovers");
   ASSERT_GE (stages.end() - leftovers, 2);
   EXPECT_EQ (*(leftovers + 1), "patches");
+
+  // The patches need the frame's grey levels also when no other stage that reads them runs.
+  no_clusters.verify_clusters = false;
+  no_clusters.guided_search = false;
+  no_clusters.surface_refinement = false;
+  discovery.setParameters (no_clusters);
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto alone = boxesOf (scene, result, result.models.front());
+  EXPECT_EQ (std::set<int> (alone.begin(), alone.end()), (std::set<int>{0, 2}));
 }
 
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)
