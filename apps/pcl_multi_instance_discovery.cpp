@@ -118,6 +118,9 @@ printHelp (const char* program)
   line ("-region_inliers N",
         "RANSAC minimum inliers to merge two models through their regions",
         static_cast<double> (d.min_region_merge_inliers));
+  line ("-join_corr C",
+        "smallest grey-level correlation of a copy joining a model, each way",
+        static_cast<double> (d.min_join_correlation));
   line ("-leftover_desc_dist D",
         "largest descriptor distance of a match in the leftover round",
         static_cast<double> (d.leftover_descriptor_distance));
@@ -200,6 +203,9 @@ printHelp (const char* program)
       "  -no_region_merge    do not merge models through the keypoints around their "
       "instances\n");
   print_info ("                      (the paper's behaviour)\n");
+  print_info ("  -no_join_check      merge models and add detected instances without "
+              "comparing\n");
+  print_info ("                      the look of the copies (the paper's behaviour)\n");
   print_info ("  -no_leftovers       no second round on the keypoints outside every "
               "instance\n");
   print_info ("                      (the paper's behaviour)\n");
@@ -249,6 +255,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_rows", 0},
                                       {"-keep_compounds", 0},
                                       {"-no_region_merge", 0},
+                                      {"-no_join_check", 0},
                                       {"-no_leftovers", 0},
                                       {"-no_verification", 0},
                                       {"-no_guided", 0},
@@ -279,6 +286,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-leftover_margin", 1},
                                       {"-region_margin", 1},
                                       {"-region_inliers", 1},
+                                      {"-join_corr", 1},
                                       {"-json", 1},
                                       {"-models", 1},
                                       {"-max_keypoints", 1},
@@ -346,6 +354,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_chains = !pcl::console::find_switch (argc, argv, "-keep_rows");
   p.split_compounds = !pcl::console::find_switch (argc, argv, "-keep_compounds");
   p.merge_through_regions = !pcl::console::find_switch (argc, argv, "-no_region_merge");
+  p.verify_joins = !pcl::console::find_switch (argc, argv, "-no_join_check");
   p.discover_leftovers = !pcl::console::find_switch (argc, argv, "-no_leftovers");
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
@@ -377,6 +386,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-merge_fraction", p.merge_fraction) &&
       parseNumber (argc, argv, "-region_margin", p.region_margin) &&
       parseNumber (argc, argv, "-region_inliers", p.min_region_merge_inliers) &&
+      parseNumber (argc, argv, "-join_corr", p.min_join_correlation) &&
       parseNumber (argc, argv, "-leftover_desc_dist", p.leftover_descriptor_distance) &&
       parseNumber (argc, argv, "-leftover_margin", p.leftover_margin) &&
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&

@@ -242,6 +242,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),
              ">= 3");
+  c.require (p.min_join_correlation >= -1.0f && p.min_join_correlation <= 1.0f,
+             "min_join_correlation",
+             static_cast<double> (p.min_join_correlation),
+             "in [-1, 1]");
   c.require (p.min_inlier_ratio >= 0.0f && p.min_inlier_ratio < 1.0f,
              "min_inlier_ratio",
              static_cast<double> (p.min_inlier_ratio),

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -95,11 +96,102 @@ resolveOverlaps (const DiscoveryParameters& p,
                 models.end());
 }
 
-/** Merge the models whose instances show a common surface around their landmarks
-  * (RegionModelMerger), with the pipeline's RANSAC settings.
+/** The photometric verification on `surface` with the pipeline's radius, depth tolerance and
+  * largest chromaticity difference, and the given minimum correlation.
+  */
+PhotometricVerification
+makeVerification (const DiscoveryParameters& p,
+                  const KeypointSurface& surface,
+                  float min_correlation)
+{
+  PhotometricVerification verification;
+  verification.setKeypointSurface (surface);
+  verification.setRadius (p.verification_radius);
+  verification.setDepthTolerance (p.verification_depth_tolerance);
+  verification.setMinCorrelation (min_correlation);
+  verification.setMaxChromaticityDifference (p.max_chromaticity_difference);
+  return verification;
+}
+
+/** True if the frame lets PhotometricVerification compare surfaces: its organized points, grey
+  * levels and projection are known.
   */
 bool
-mergeThroughRegions (const DiscoveryParameters& p, DiscoveryResult& result)
+canCompareLooks (const KeypointSurface& surface)
+{
+  return surface.organized && surface.intensity && surface.pinhole;
+}
+
+/** The pair of copies, one of `as` and one of `bs`, that observe the most pairs of `same`
+  * landmarks (a landmark of the model of `as`, one of the model of `bs`), as a cluster linking
+  * the copy of `as` to the copy of `bs` on the keypoints they observe of those pairs;
+  * `b_to_a` maps the frame of the model of `bs` into that of `as`. No correspondences if no
+  * two copies observe a pair.
+  */
+TripletCluster
+bestCopyLink (const ModelInstances& as,
+              const ModelInstances& bs,
+              const std::vector<std::pair<int, int>>& same,
+              const Eigen::Matrix4f& b_to_a)
+{
+  const auto observed = [] (const ModelInstance& instance) {
+    std::map<int, pcl::index_t> keypoint_of;
+    for (std::size_t o = 0; o < instance.landmarks.size(); ++o)
+      keypoint_of.emplace (instance.landmarks[o], instance.keypoints[o]);
+    return keypoint_of;
+  };
+  TripletCluster best;
+  for (const auto& copy_a : as) {
+    const auto in_a = observed (copy_a);
+    for (const auto& copy_b : bs) {
+      const auto in_b = observed (copy_b);
+      TripletCluster link;
+      for (const auto& [landmark_a, landmark_b] : same) {
+        const auto ka = in_a.find (landmark_a);
+        const auto kb = in_b.find (landmark_b);
+        if (ka != in_a.end() && kb != in_b.end() && ka->second != kb->second)
+          link.correspondences.emplace_back (ka->second, kb->second, 0.0f);
+      }
+      if (link.correspondences.size() <= best.correspondences.size())
+        continue;
+      for (const auto& pair : link.correspondences) {
+        link.source_indices.push_back (pair.index_query);
+        link.target_indices.push_back (pair.index_match);
+      }
+      link.transformation = copy_b.pose * b_to_a.inverse() * copy_a.pose.inverse();
+      best = std::move (link);
+    }
+  }
+  for (auto* indices : {&best.source_indices, &best.target_indices}) {
+    std::sort (indices->begin(), indices->end());
+    indices->erase (std::unique (indices->begin(), indices->end()), indices->end());
+  }
+  return best;
+}
+
+/** True if copies must pass the look check to join a model (DiscoveryParameters::verify_joins)
+  * and `link`, between a copy of the model and the copy that would join, fails it.
+  */
+bool
+copiesLookApart (const DiscoveryParameters& p,
+                 const KeypointSurface& surface,
+                 const TripletCluster& link)
+{
+  if (!p.verify_joins || !canCompareLooks (surface) || link.correspondences.empty())
+    return false;
+  const PhotometricVerification verification =
+      makeVerification (p, surface, p.min_join_correlation);
+  return verification.rejects (verification.compare (link));
+}
+
+/** Merge the models whose instances show a common surface around their landmarks
+  * (RegionModelMerger), with the pipeline's RANSAC settings; when the frame can tell, only
+  * through copies whose common surface looks alike (DiscoveryParameters::verify_joins).
+  */
+bool
+mergeThroughRegions (const DiscoveryParameters& p,
+                     const KeypointSurface& surface,
+                     DiscoveryResult& result)
 {
   ModelInstanceDetector detector = makeDetector (p, nullptr);
   detector.setMinInliers (p.min_region_merge_inliers);
@@ -110,6 +202,9 @@ mergeThroughRegions (const DiscoveryParameters& p, DiscoveryResult& result)
   merger.setRegionMargin (p.region_margin);
   merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
   merger.setRefinementIterations (p.refinement_iterations);
+  merger.setMergeCondition ([&p, &surface] (const TripletCluster& link) {
+    return !copiesLookApart (p, surface, link);
+  });
   return merger.merge (result.models);
 }
 
@@ -127,9 +222,14 @@ addFoundInstances (const DiscoveryParameters& p,
     refineModel (model, *result.keypoints, p.refinement_iterations);
 }
 
-/** Look for each model's instances among the keypoints no model uses yet. */
+/** Look for each model's instances among the keypoints no model uses yet; when the frame can
+  * tell, an instance whose surface does not look like that of the model's copy that observes
+  * most of its landmarks is not added (DiscoveryParameters::verify_joins).
+  */
 bool
-detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result)
+detectAdditionalInstances (const DiscoveryParameters& p,
+                           const KeypointSurface& surface,
+                           DiscoveryResult& result)
 {
   std::set<pcl::index_t> used;
   for (const auto& model : result.models)
@@ -148,6 +248,17 @@ detectAdditionalInstances (const DiscoveryParameters& p, DiscoveryResult& result
     ModelInstances found;
     if (!detector.detect (found))
       return false;
+    const auto looks_apart = [&] (const ModelInstance& instance) {
+      std::vector<std::pair<int, int>> same;
+      for (const int l : instance.landmarks)
+        same.emplace_back (l, l);
+      return copiesLookApart (
+          p,
+          surface,
+          bestCopyLink (
+              model.instances, {instance}, same, Eigen::Matrix4f::Identity()));
+    };
+    found.erase (std::remove_if (found.begin(), found.end(), looks_apart), found.end());
     for (const auto& instance : found)
       used.insert (instance.keypoints.begin(), instance.keypoints.end());
     addFoundInstances (p, result, found, model);
@@ -201,23 +312,6 @@ groupWithTriplets (const DiscoveryParameters& p,
   return true;
 }
 
-/** The photometric verification on `surface` with the pipeline's radius, depth tolerance and
-  * largest chromaticity difference, and the given minimum correlation.
-  */
-PhotometricVerification
-makeVerification (const DiscoveryParameters& p,
-                  const KeypointSurface& surface,
-                  float min_correlation)
-{
-  PhotometricVerification verification;
-  verification.setKeypointSurface (surface);
-  verification.setRadius (p.verification_radius);
-  verification.setDepthTolerance (p.verification_depth_tolerance);
-  verification.setMinCorrelation (min_correlation);
-  verification.setMaxChromaticityDifference (p.max_chromaticity_difference);
-  return verification;
-}
-
 /** The photometric verification of the clusters (DiscoveryParameters::verify_clusters), when
   * the frame and its grey levels are known and a pinhole camera fits the frame.
   */
@@ -230,8 +324,7 @@ verifyClusters (const DiscoveryParameters& p,
   pcl::StopWatch watch;
   result.rejected_clusters = 0;
   // Without a pinhole camera (frameSurface() has warned) the clusters are not verified.
-  if (p.verify_clusters && surface.organized && surface.intensity && surface.pinhole &&
-      !clusters.empty()) {
+  if (p.verify_clusters && canCompareLooks (surface) && !clusters.empty()) {
     TripletClusters verified;
     if (!makeVerification (p, surface, p.min_photometric_correlation)
              .filter (clusters, verified))
@@ -249,7 +342,8 @@ bool
 mergeMatchingModels (const DiscoveryParameters& p,
                      const KeypointCloud& frame,
                      ObjectModels& models,
-                     std::size_t first_new)
+                     std::size_t first_new,
+                     const KeypointSurface& surface)
 {
   std::string problem;
   if (!validateDiscoveryParameters (p, problem)) {
@@ -270,16 +364,22 @@ mergeMatchingModels (const DiscoveryParameters& p,
       ModelInstances found;
       if (!detector.detect (found))
         return false;
-      if (found.empty()) {
+      // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
+      std::vector<std::pair<int, int>> same;
+      if (!found.empty())
+        for (std::size_t o = 0; o < found.front().keypoints.size(); ++o)
+          same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (
+                                 found.front().keypoints[o])],
+                             found.front().landmarks[o]);
+      if (found.empty() || copiesLookApart (p,
+                                            surface,
+                                            bestCopyLink (models[i].instances,
+                                                          models[j].instances,
+                                                          same,
+                                                          found.front().pose))) {
         ++j;
         continue;
       }
-      // found.pose maps j's frame into i's frame; mergeModel wants i -> j.
-      std::vector<std::pair<int, int>> same;
-      for (std::size_t o = 0; o < found.front().keypoints.size(); ++o)
-        same.emplace_back (models[i].descriptor_landmarks[static_cast<std::size_t> (
-                               found.front().keypoints[o])],
-                           found.front().landmarks[o]);
       mergeModel (models[i],
                   models[j],
                   found.front().pose.inverse(),
@@ -331,7 +431,7 @@ markInstances (const KeypointCloud& keypoints,
 bool
 canSearchGuided (const KeypointSurface& surface, const DiscoveryResult& result)
 {
-  return surface.organized && surface.intensity && surface.pinhole &&
+  return canCompareLooks (surface) &&
          result.image_keypoints.size() == result.keypoints->size();
 }
 
@@ -499,16 +599,17 @@ discoverFromPatches (const DiscoveryParameters& p,
       result.models.push_back (std::move (model));
       // Like another model but not merged with it: a second model of its product, or
       // another product's print; dropped.
-      if (related && !mergeMatchingModels (p, keypoints, result.models, before))
+      if (related &&
+          !mergeMatchingModels (p, keypoints, result.models, before, surface))
         return false;
       if (related && result.models.size() > before)
         result.models.pop_back();
     }
     if (result.models.size() > first_new) {
       if (p.merge_models &&
-          !mergeMatchingModels (p, keypoints, result.models, first_new))
+          !mergeMatchingModels (p, keypoints, result.models, first_new, surface))
         return false;
-      if (p.merge_through_regions && !mergeThroughRegions (p, result))
+      if (p.merge_through_regions && !mergeThroughRegions (p, surface, result))
         return false;
       if (p.resolve_overlaps)
         resolveOverlaps (p, keypoints, result.models);
@@ -581,7 +682,7 @@ selectLeftovers (const DiscoveryParameters& p,
 bool
 discoverLeftovers (const DiscoveryParameters& p,
                    const pcl::PointCloud<pcl::PointNormal>::ConstPtr& surface,
-                   const KeypointSurface& frame,
+                   const KeypointSurface& keypoint_surface,
                    DiscoveryResult& result)
 {
   DiscoveryResult leftovers;
@@ -591,7 +692,7 @@ discoverLeftovers (const DiscoveryParameters& p,
   second.discover_leftovers = false;
   second.patch_discovery = false;
   second.max_descriptor_distance = p.leftover_descriptor_distance;
-  if (!runStages (second, leftovers, surface, frame))
+  if (!runStages (second, leftovers, surface, keypoint_surface))
     return false;
   result.rejected_clusters += leftovers.rejected_clusters;
   if (leftovers.models.empty())
@@ -604,16 +705,18 @@ discoverLeftovers (const DiscoveryParameters& p,
     result.models.push_back (std::move (model));
   }
   if (p.merge_models &&
-      !mergeMatchingModels (p, *result.keypoints, result.models, first_new))
+      !mergeMatchingModels (
+          p, *result.keypoints, result.models, first_new, keypoint_surface))
     return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
   return true;
 }
 
-/** The points of an organized colour frame, and, when a stage compares grey levels (the
-  * cluster verification, the guided search, the appearance split), its grey levels and
-  * projection (no keypoints yet); empty for none. Warns, once for both rounds, when no pinhole
+/** The points of an organized colour frame, and, when a stage compares looks or refines on
+  * the depth (the cluster verification, the look check of what joins a model, the guided
+  * search, the patches, the appearance split, the surface refinement), its grey levels, colours
+  * and projection (no keypoints yet); empty for none. Warns, once for both rounds, when no pinhole
   * camera fits the frame: those stages then do not run.
   */
 KeypointSurface
@@ -626,7 +729,7 @@ frameSurface (const DiscoveryParameters& p,
   auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
-  if (!p.verify_clusters && !p.guided_search && !p.patch_discovery &&
+  if (!p.verify_clusters && !p.verify_joins && !p.guided_search && !p.patch_discovery &&
       !p.split_by_appearance && !p.surface_refinement)
     return frame;
   frame.intensity =
@@ -637,9 +740,11 @@ frameSurface (const DiscoveryParameters& p,
   if (fitFramePinhole (*points, pinhole))
     frame.pinhole = std::make_shared<const FramePinhole> (pinhole);
   else
-    PCL_WARN ("[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
-              "(not in its camera's coordinates?): no cluster verification, guided "
-              "instance search, patches, appearance split or surface refinement.\n");
+    PCL_WARN (
+        "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+        "(not in its camera's coordinates?): no cluster verification, look check "
+        "of what joins a model, guided instance search, patches, appearance split "
+        "or surface refinement.\n");
   return frame;
 }
 
@@ -771,13 +876,15 @@ runStages (const DiscoveryParameters& p,
   result.timing_ms.emplace_back ("modeling", watch.getTime());
 
   watch.reset();
-  if (p.merge_models && !mergeMatchingModels (p, *result.keypoints, result.models))
+  if (p.merge_models &&
+      !mergeMatchingModels (p, *result.keypoints, result.models, 0, keypoint_surface))
     return false;
   if (p.resolve_overlaps)
     resolveOverlaps (p, *result.keypoints, result.models);
-  if (p.merge_through_regions && !mergeThroughRegions (p, result))
+  if (p.merge_through_regions && !mergeThroughRegions (p, keypoint_surface, result))
     return false;
-  if (p.detect_additional_instances && !detectAdditionalInstances (p, result))
+  if (p.detect_additional_instances &&
+      !detectAdditionalInstances (p, keypoint_surface, result))
     return false;
   if (!searchGuidedInstances (p, keypoint_surface, result))
     return false;
@@ -788,7 +895,7 @@ runStages (const DiscoveryParameters& p,
   result.timing_ms.emplace_back ("detection", watch.getTime());
 
   watch.reset();
-  if (p.discover_leftovers && !discoverLeftovers (p, surface, frame, result))
+  if (p.discover_leftovers && !discoverLeftovers (p, surface, keypoint_surface, result))
     return false;
   result.timing_ms.emplace_back ("leftovers", watch.getTime());
   return discoverFromPatches (p, keypoint_surface, result);

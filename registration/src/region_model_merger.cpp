@@ -5,6 +5,7 @@
 
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -37,13 +38,41 @@ regionModel (const KeypointCloud& frame,
   return model;
 }
 
+/** The pairs the search matched between the copy of `region` (the region model's landmarks are
+  * its keypoints, in order) and another copy, found at `found`, as a cluster linking the
+  * first copy, at `pose`, to the second.
+  */
+TripletCluster
+copyLink (const pcl::Indices& region,
+          const Eigen::Matrix4f& pose,
+          const ModelInstance& found)
+{
+  TripletCluster link;
+  for (std::size_t o = 0; o < found.keypoints.size(); ++o) {
+    const pcl::index_t source = region[static_cast<std::size_t> (found.landmarks[o])];
+    link.correspondences.emplace_back (source, found.keypoints[o], 0.0f);
+    link.source_indices.push_back (source);
+    link.target_indices.push_back (found.keypoints[o]);
+  }
+  const auto sort_unique = [] (pcl::Indices& indices) {
+    std::sort (indices.begin(), indices.end());
+    indices.erase (std::unique (indices.begin(), indices.end()), indices.end());
+  };
+  sort_unique (link.source_indices);
+  sort_unique (link.target_indices);
+  link.transformation = found.pose * pose.inverse();
+  link.rms_error = found.rms_error;
+  return link;
+}
+
 } // namespace
 
 RegionModelMerger::PairOutcome
 RegionModelMerger::mergePair (ObjectModels& models,
                               const std::vector<std::vector<pcl::Indices>>& regions,
                               std::size_t i,
-                              std::size_t j) const
+                              std::size_t j,
+                              std::size_t& refused) const
 {
   for (std::size_t a = 0; a < models[i].instances.size(); ++a) {
     if (regions[i][a].size() < 3)
@@ -63,6 +92,12 @@ RegionModelMerger::mergePair (ObjectModels& models,
         return PairOutcome::failed;
       if (found.empty())
         continue;
+      if (condition_ &&
+          !condition_ (
+              copyLink (regions[i][a], models[i].instances[a].pose, found.front()))) {
+        ++refused;
+        continue;
+      }
       // found.pose maps i's frame onto the copy of b, whose pose maps j's frame there.
       const Eigen::Matrix4f into_to_from =
           models[j].instances[b].pose.inverse() * found.front().pose;
@@ -75,13 +110,15 @@ RegionModelMerger::mergePair (ObjectModels& models,
 }
 
 bool
-RegionModelMerger::mergeChecked (ObjectModels& models, std::size_t& merged) const
+RegionModelMerger::mergeChecked (ObjectModels& models,
+                                 std::size_t& merged,
+                                 std::size_t& refused) const
 {
   // One pass over the pairs; the regions change with every merge.
   auto regions = computeInstanceRegions (*keypoints_, models, margin_);
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = i + 1; j < models.size();) {
-      const PairOutcome outcome = mergePair (models, regions, i, j);
+      const PairOutcome outcome = mergePair (models, regions, i, j, refused);
       if (outcome == PairOutcome::failed)
         return false;
       if (outcome == PairOutcome::apart) {
@@ -99,7 +136,7 @@ RegionModelMerger::mergeChecked (ObjectModels& models, std::size_t& merged) cons
 bool
 RegionModelMerger::merge (ObjectModels& models)
 {
-  merged_ = 0;
+  merged_ = refused_ = 0;
   const char* name = "[mid::RegionModelMerger::merge]";
   if (!keypoints_ || !descriptors_ || keypoints_->size() != descriptors_->size()) {
     PCL_ERROR (
@@ -136,10 +173,11 @@ RegionModelMerger::merge (ObjectModels& models)
         }
   // Merges change the models: work on a copy, so that a failure leaves them as they were.
   ObjectModels merged = models;
-  std::size_t count = 0;
-  if (!mergeChecked (merged, count))
+  std::size_t count = 0, refused = 0;
+  if (!mergeChecked (merged, count, refused))
     return false;
   merged_ = count;
+  refused_ = refused;
   models.swap (merged);
   return true;
 }

@@ -8,6 +8,9 @@
 #include <mid/simulation/table_plane.h>
 #include <mid/simulation/texture.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 
@@ -82,6 +85,54 @@ boxUnderKeypoints (const RenderedObjectsScene& scene,
       count = n;
     }
   return 2 * count > static_cast<int> (pixels.size()) ? best : -1;
+}
+
+namespace {
+
+/** Tint one pixel's colour blue, keeping its grey level. */
+template <typename PointT>
+void
+tintPixel (PointT& p)
+{
+  const float grey = 0.299f * static_cast<float> (p.r) +
+                     0.587f * static_cast<float> (p.g) +
+                     0.114f * static_cast<float> (p.b);
+  const float r = 0.5f * grey, b = std::min (255.0f, 1.6f * grey);
+  const float g = std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
+  p.r = static_cast<std::uint8_t> (std::lround (r));
+  p.g = static_cast<std::uint8_t> (std::lround (g));
+  p.b = static_cast<std::uint8_t> (std::lround (b));
+}
+
+/** Tint every pixel of box `box` in an organized cloud of the scene's frame. */
+template <typename PointT>
+std::size_t
+tintBox (const RenderedObjectsScene& scene, int box, pcl::PointCloud<PointT>& cloud)
+{
+  std::size_t recoloured = 0;
+  for (int v = 0; v < scene.frame.instances.rows; ++v)
+    for (int u = 0; u < scene.frame.instances.cols; ++u)
+      if (scene.frame.instances.at<int> (v, u) == box) {
+        tintPixel (cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v)));
+        ++recoloured;
+      }
+  return recoloured;
+}
+
+} // namespace
+
+std::size_t
+tintKeepingGreyLevels (const RenderedObjectsScene& scene,
+                       int box,
+                       pcl::PointCloud<pcl::PointXYZRGB>& cloud)
+{
+  return tintBox (scene, box, cloud);
+}
+
+std::size_t
+tintKeepingGreyLevels (RenderedObjectsScene& scene, int box)
+{
+  return tintBox (scene, box, *scene.cloud);
 }
 
 } // namespace test

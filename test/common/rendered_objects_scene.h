@@ -6,6 +6,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,20 @@ renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth = 0.0);
 int
 boxUnderKeypoints (const RenderedObjectsScene& scene,
                    const std::vector<Eigen::Vector2f>& pixels);
+
+/** \brief Recolour box `box`'s pixels of `cloud` (a colour cloud of the scene's frame) blue,
+  * keeping each pixel's grey level (0.299 r + 0.587 g + 0.114 b, up to rounding): the same
+  * print in other colours, which grey levels, and so SIFT, cannot tell from the original.
+  * \return the number of pixels recoloured
+  */
+std::size_t
+tintKeepingGreyLevels (const RenderedObjectsScene& scene,
+                       int box,
+                       pcl::PointCloud<pcl::PointXYZRGB>& cloud);
+
+/** \brief The same on the scene's own cloud. */
+std::size_t
+tintKeepingGreyLevels (RenderedObjectsScene& scene, int box);
 
 } // namespace test
 } // namespace mid

@@ -1,11 +1,16 @@
+#include "../segmentation/rendered_keypoints.h"
+#include "rendered_objects_scene.h"
 #include "rigid_motion.h"
 
 #include <mid/discovery/discovery_stages.h>
+#include <mid/segmentation/frame_pinhole.h>
+#include <mid/segmentation/photometric_verification.h>
 
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <random>
+#include <set>
 #include <string>
 
 namespace {
@@ -151,6 +156,59 @@ TEST (ModelMergingStage, ComparesOnlyThePairsWithANewModel)
   merged = models;
   ASSERT_TRUE (mid::mergeMatchingModels ({}, frame, merged, 0));
   EXPECT_EQ (merged.size(), 1u);
+}
+
+TEST (ModelMergingStage, KeepsApartModelsWhoseCopiesLookDifferent)
+{
+  // Boxes 0 and 1 carry the apple print, boxes 2 and 3 the same print in other colours with the
+  // same grey levels. Models of the true instances of {0, 1} and of {2, 3} share their SIFT
+  // descriptors and geometry: RANSAC merges them unless the colours are compared.
+  const char* print = mid::test::kApplePrint;
+  const Eigen::Vector3d size = mid::test::kPrintedBoxSize;
+  auto scene = mid::test::renderBoxes (
+      {{print, size, mid::test::boxPose (-0.14, -0.08, 0.8, 15.0)},
+       {print, size, mid::test::boxPose (0.12, -0.07, 0.84, 140.0, 15.0)},
+       {print, size, mid::test::boxPose (-0.12, 0.11, 0.82, -40.0)},
+       {print, size, mid::test::boxPose (0.13, 0.12, 0.85, 250.0, -10.0)}},
+      0.95);
+  ASSERT_GT (mid::test::tintKeepingGreyLevels (scene, 2), 1000u);
+  ASSERT_GT (mid::test::tintKeepingGreyLevels (scene, 3), 1000u);
+  mid::test::RenderedKeypoints frame (scene);
+  pcl::PointCloud<pcl::PointXYZRGB> colour;
+  pcl::copyPointCloud (*scene.cloud, colour);
+  frame.surface.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
+      mid::chromaticities (colour));
+  mid::FramePinhole pinhole;
+  ASSERT_TRUE (mid::fitFramePinhole (*frame.surface.organized, pinhole));
+  frame.surface.pinhole = std::make_shared<const mid::FramePinhole> (pinhole);
+  mid::ObjectModels models (2);
+  frame.addTruthInstance (0, models[0]);
+  frame.addTruthInstance (1, models[0]);
+  frame.addTruthInstance (2, models[1]);
+  frame.addTruthInstance (3, models[1]);
+
+  mid::ObjectModels kept = models;
+  ASSERT_TRUE (mid::mergeMatchingModels ({}, *frame.keypoints, kept, 0, frame.surface));
+  ASSERT_EQ (kept.size(), 2u);
+  for (std::size_t m = 0; m < 2; ++m)
+    for (std::size_t i = 0; i < 2; ++i)
+      EXPECT_EQ (frame.boxOf (kept[m].instances[i].keypoints),
+                 static_cast<int> (2 * m + i));
+
+  // Without the frame, or with the check off, they merge: one model on the four boxes.
+  mid::ObjectModels merged = models;
+  ASSERT_TRUE (mid::mergeMatchingModels ({}, *frame.keypoints, merged));
+  EXPECT_EQ (merged.size(), 1u);
+  mid::DiscoveryParameters unchecked;
+  unchecked.verify_joins = false;
+  merged = models;
+  ASSERT_TRUE (
+      mid::mergeMatchingModels (unchecked, *frame.keypoints, merged, 0, frame.surface));
+  ASSERT_EQ (merged.size(), 1u);
+  std::set<int> boxes;
+  for (const auto& instance : merged.front().instances)
+    boxes.insert (frame.boxOf (instance.keypoints));
+  EXPECT_EQ (boxes, (std::set<int>{0, 1, 2, 3}));
 }
 
 TEST (ModelMergingStage, RefusesParametersOutOfRange)

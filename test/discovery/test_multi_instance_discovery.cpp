@@ -264,6 +264,45 @@ TEST (MultiInstanceDiscovery, FindsCopiesFromAPatchWhereNoClusterForms)
   EXPECT_EQ (std::set<int> (alone.begin(), alone.end()), (std::set<int>{0, 2}));
 }
 
+TEST (MultiInstanceDiscovery, KeepsTheModelsOfOnePrintInOtherColoursApart)
+{
+  // Boxes 0 and 1 carry the cookie print, boxes 2 and 3 the same print in other colours with
+  // the same grey levels: SIFT matches all four, so the two pairs' models share their
+  // descriptors and the paper's model comparison merges them. Their colours tell them apart.
+  auto scene = mid::test::renderBoxes ({
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.16, -0.1, 0.85, 10.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.15, -0.11, 0.88, 100.0, 15.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.14, 0.12, 0.83, -60.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.16, 0.13, 0.86, 170.0, -10.0)},
+  });
+  ASSERT_GT (mid::test::tintKeepingGreyLevels (scene, 2), 1000u);
+  ASSERT_GT (mid::test::tintKeepingGreyLevels (scene, 3), 1000u);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters parameters;
+  parameters.merge_by_size = false; // one size: this step would merge them by design
+  discovery.setParameters (parameters);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 2u);
+  std::set<std::set<int>> objects;
+  for (const auto& model : result.models) {
+    const auto boxes = boxesOf (scene, result, model);
+    ASSERT_EQ (boxes.size(), 2u);
+    objects.insert (std::set<int> (boxes.begin(), boxes.end()));
+    expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
+  }
+  EXPECT_EQ (objects, (std::set<std::set<int>>{{0, 1}, {2, 3}}));
+
+  // Without the check, the merge of the two models joins the four copies.
+  parameters.verify_joins = false;
+  discovery.setParameters (parameters);
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto boxes = boxesOf (scene, result, result.models.front());
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
+}
+
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)
 {
   const auto scene = mid::test::renderBoxes ({

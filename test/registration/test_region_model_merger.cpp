@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <random>
 #include <vector>
@@ -260,6 +261,69 @@ TEST_F (RegionModelMergerTest, MergesObjectsOnSixCommonPoints)
   ASSERT_TRUE (merge.merge (models));
   EXPECT_EQ (merge.getMergedCount(), 1u);
   expectOneModelAtTheTruePoses (models, 4);
+}
+
+TEST_F (RegionModelMergerTest, AsksTheMergeConditionAboutEachPairOfCopiesBeforeMerging)
+{
+  // The four copies and two models of MergesTwoModelsOfOneObjectThroughTheSurfaceNeitherHolds.
+  addCopy (0, rigidMotion (Eigen::Vector3f (-0.3f, 0.0f, 0.8f), 0.4f));
+  addCopy (0, rigidMotion (Eigen::Vector3f (-0.1f, 0.1f, 0.85f), 2.1f));
+  addCopy (0, rigidMotion (Eigen::Vector3f (0.1f, -0.1f, 0.8f), -1.2f, {0, 1, 4}));
+  addCopy (0, rigidMotion (Eigen::Vector3f (0.3f, 0.05f, 0.9f), 3.0f));
+  const mid::ObjectModels before{
+      modelOf (0, kLeft, Eigen::Isometry3f::Identity(), {0, 1}),
+      modelOf (kLeft + kMiddle, kRight, Eigen::Isometry3f::Identity(), {2, 3})};
+  std::vector<mid::TripletCluster> asked;
+  const auto refuse_first = [&asked] (const mid::TripletCluster& link) {
+    asked.push_back (link);
+    return asked.size() > 1;
+  };
+  mid::ObjectModels models = before;
+  mid::RegionModelMerger merge = merger();
+  merge.setMergeCondition (refuse_first);
+  ASSERT_TRUE (merge.merge (models));
+  // The first pair of copies refused, the search went on and merged through the next.
+  ASSERT_EQ (asked.size(), 2u);
+  EXPECT_EQ (merge.getRefusedCount(), 1u);
+  EXPECT_EQ (merge.getMergedCount(), 1u);
+  expectOneModelAtTheTruePoses (models, 4);
+  // Each link is the true motion of one copy of the first model onto one of the second, on
+  // the keypoints of one object point seen on both (the middle band's).
+  for (const auto& link : asked) {
+    ASSERT_GE (link.correspondences.size(), 6u);
+    EXPECT_EQ (link.source_indices.size(), link.correspondences.size());
+    EXPECT_EQ (link.target_indices.size(), link.correspondences.size());
+    EXPECT_TRUE (
+        std::is_sorted (link.source_indices.begin(), link.source_indices.end()));
+    EXPECT_TRUE (
+        std::is_sorted (link.target_indices.begin(), link.target_indices.end()));
+    const int from = link.correspondences.front().index_query / kPoints,
+              to = link.correspondences.front().index_match / kPoints;
+    EXPECT_LT (from, 2);
+    EXPECT_GE (to, 2);
+    const auto [angle, distance] =
+        poseError (link.transformation,
+                   poses_[static_cast<std::size_t> (to)] *
+                       poses_[static_cast<std::size_t> (from)].inverse());
+    EXPECT_LT (angle, 1e-3);
+    EXPECT_LT (distance, 1e-3);
+    for (const auto& pair : link.correspondences) {
+      EXPECT_EQ (pair.index_query / kPoints, from);
+      EXPECT_EQ (pair.index_match / kPoints, to);
+      EXPECT_EQ (pair.index_query % kPoints, pair.index_match % kPoints);
+    }
+  }
+
+  // A condition that refuses every pair keeps the models as they were.
+  models = before;
+  merge.setMergeCondition ([] (const mid::TripletCluster&) { return false; });
+  ASSERT_TRUE (merge.merge (models));
+  EXPECT_EQ (merge.getMergedCount(), 0u);
+  EXPECT_GE (merge.getRefusedCount(), 1u);
+  ASSERT_EQ (models.size(), 2u);
+  for (std::size_t m = 0; m < 2; ++m)
+    for (std::size_t i = 0; i < 2; ++i)
+      EXPECT_TRUE (models[m].instances[i].pose.isApprox (before[m].instances[i].pose));
 }
 
 TEST_F (RegionModelMergerTest, AKeypointAroundTwoTouchingCopiesMatchesNeitherWay)

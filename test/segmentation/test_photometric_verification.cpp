@@ -320,23 +320,7 @@ TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
   pcl::PointCloud<pcl::PointXYZRGB> colour, tinted;
   pcl::copyPointCloud (*scene.cloud, colour);
   tinted = colour;
-  std::size_t recoloured = 0;
-  for (int v = 0; v < scene.frame.instances.rows; ++v)
-    for (int u = 0; u < scene.frame.instances.cols; ++u) {
-      if (scene.frame.instances.at<int> (v, u) != 1)
-        continue;
-      auto& p = tinted (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
-      const float grey = 0.299f * static_cast<float> (p.r) +
-                         0.587f * static_cast<float> (p.g) +
-                         0.114f * static_cast<float> (p.b);
-      const float r = 0.5f * grey, b = std::min (255.0f, 1.6f * grey);
-      const float g =
-          std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
-      p.r = static_cast<std::uint8_t> (std::lround (r));
-      p.g = static_cast<std::uint8_t> (std::lround (g));
-      p.b = static_cast<std::uint8_t> (std::lround (b));
-      ++recoloured;
-    }
+  const std::size_t recoloured = mid::test::tintKeepingGreyLevels (scene, 1, tinted);
   ASSERT_GT (recoloured, 1000u);
   const mid::TripletCluster copies = faces.cluster (0, 1);
   mid::PhotometricVerification verification;

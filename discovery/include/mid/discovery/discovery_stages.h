@@ -2,6 +2,7 @@
 
 #include <mid/discovery/discovery_parameters.h>
 #include <mid/discovery/discovery_result.h>
+#include <mid/segmentation/surface_gap.h>
 
 namespace mid {
 
@@ -39,6 +40,10 @@ discoverFromKeypoints (
   * \param[in,out] models the models; merged ones are removed
   * \param[in] first_new only pairs with at least one model from this index on are compared
   * (the models before it were compared with each other already); 0 compares every pair
+  * \param[in] surface the frame's keypoint surface, with a pixel for each of `frame`'s
+  * keypoints; when it holds grey levels and a projection, a merge also needs the two copies
+  * that observe the most of the matched landmarks to look alike
+  * (DiscoveryParameters::verify_joins); empty (the default): no such check
   * \return false (with a PCL_ERROR, models unchanged) if a parameter is out of its range
   * (validateDiscoveryParameters()) or the detector refuses a model
   */
@@ -46,6 +51,7 @@ bool
 mergeMatchingModels (const DiscoveryParameters& parameters,
                      const KeypointCloud& frame,
                      ObjectModels& models,
-                     std::size_t first_new = 0);
+                     std::size_t first_new = 0,
+                     const KeypointSurface& surface = KeypointSurface());
 
 } // namespace mid

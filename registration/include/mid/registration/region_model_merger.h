@@ -3,9 +3,11 @@
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/object_model.h>
+#include <mid/registration/triplet_cluster.h>
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -30,11 +32,27 @@ namespace mid {
   * (refineModel()), and the regions computed again. A pair of models compared before a merge
   * is not compared again.
   *
+  * A merge condition, when set, is asked about each pair of copies the search pairs up, before
+  * they merge: a pair it refuses does not merge the models, and the search goes on with the
+  * next pair. The pipeline uses it to compare the look of the two copies' common surface
+  * (PhotometricVerification, in the segmentation module): on the benchmark's development
+  * frames, regions of different products whose prints share the same kind of small text
+  * matched on 6 keypoints and more.
+  *
   * Random draws are the detector's: the same input and seed give the same merges.
   */
 class RegionModelMerger
 {
 public:
+  /** \brief A test of one pair of copies the search paired up: `link` holds, as a cluster
+    * would, the frame's keypoints of the first model's copy that the search matched (source,
+    * sorted), the keypoints they matched on the second model's copy (target, sorted), the pairs
+    * themselves (correspondences: index_query on the first copy, index_match on the second)
+    * and the rigid transform mapping the first copy onto the second in the frame. Returns
+    * true if the two may merge.
+    */
+  using MergeCondition = std::function<bool (const TripletCluster& link)>;
+
   /** \brief Shared pointer to a merger. */
   using Ptr = std::shared_ptr<RegionModelMerger>;
   /** \brief Shared pointer to a const merger. */
@@ -141,6 +159,29 @@ public:
   }
   ///@}
 
+  /** \brief The test each pair of copies must pass before it merges two models (see the
+    * class); empty (the default): every pair the search finds merges.
+    */
+  ///@{
+  void
+  setMergeCondition (const MergeCondition& condition)
+  {
+    condition_ = condition;
+  }
+  const MergeCondition&
+  getMergeCondition () const
+  {
+    return condition_;
+  }
+  ///@}
+
+  /** \brief How many pairs of copies the merge condition refused in the last merge(). */
+  std::size_t
+  getRefusedCount () const
+  {
+    return refused_;
+  }
+
   /** \brief Merge the models that show a common surface around their instances.
     * \param[in,out] models the models; merged ones are removed, the others keep their order
     * \return false (with a PCL_ERROR; models unchanged) if keypoints or descriptors are
@@ -165,16 +206,21 @@ private:
     failed ///< the detector refused its input (its PCL_ERROR says why)
   };
 
-  /** \brief merge() after its checks, on a copy of the models; false if a search failed. */
+  /** \brief merge() after its checks, on a copy of the models, counting the merges and the
+    * pairs of copies the condition refused; false if a search failed.
+    */
   bool
-  mergeChecked (ObjectModels& models, std::size_t& merged) const;
+  mergeChecked (ObjectModels& models, std::size_t& merged, std::size_t& refused) const;
 
-  /** \brief Try to merge models[j] into models[i], given the instances' regions. */
+  /** \brief Try to merge models[j] into models[i], given the instances' regions; counts the
+    * pairs of copies the condition refused.
+    */
   PairOutcome
   mergePair (ObjectModels& models,
              const std::vector<std::vector<pcl::Indices>>& regions,
              std::size_t i,
-             std::size_t j) const;
+             std::size_t j,
+             std::size_t& refused) const;
 
   KeypointCloud::ConstPtr keypoints_;
   SIFTDescriptorCloud::ConstPtr descriptors_;
@@ -183,7 +229,9 @@ private:
   float max_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
   float max_distance_ = 0.01f;
   int refinement_iterations_ = 20;
+  MergeCondition condition_;
   std::size_t merged_ = 0;
+  std::size_t refused_ = 0;
 
   /** \brief A default detector with 6 minimum inliers. */
   static ModelInstanceDetector
