@@ -350,6 +350,14 @@ mergeMatchingModels (const DiscoveryParameters& p,
     PCL_ERROR ("[mid::mergeMatchingModels] Invalid parameter: %s.\n", problem.c_str());
     return false;
   }
+  if (surface.organized && !isValidKeypointSurface (surface, frame.size())) {
+    PCL_ERROR (
+        "[mid::mergeMatchingModels] The keypoint surface does not give a pixel inside "
+        "its frame for each of the %zu keypoints (%zu given).\n",
+        frame.size(),
+        surface.keypoint_pixels.size());
+    return false;
+  }
   for (std::size_t i = 0; i < models.size(); ++i)
     for (std::size_t j = std::max (i + 1, first_new); j < models.size();) {
       auto points = pcl::make_shared<KeypointCloud>();

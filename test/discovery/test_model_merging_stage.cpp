@@ -209,6 +209,16 @@ TEST (ModelMergingStage, KeepsApartModelsWhoseCopiesLookDifferent)
   for (const auto& instance : merged.front().instances)
     boxes.insert (frame.boxOf (instance.keypoints));
   EXPECT_EQ (boxes, (std::set<int>{0, 1, 2, 3}));
+
+  // A surface without a pixel for every keypoint is refused, the models untouched.
+  mid::KeypointSurface short_surface = frame.surface;
+  short_surface.keypoint_pixels.pop_back();
+  merged = models;
+  EXPECT_FALSE (
+      mid::mergeMatchingModels ({}, *frame.keypoints, merged, 0, short_surface));
+  ASSERT_EQ (merged.size(), 2u);
+  for (std::size_t m = 0; m < 2; ++m)
+    EXPECT_EQ (merged[m].instances.size(), models[m].instances.size());
 }
 
 TEST (ModelMergingStage, RefusesParametersOutOfRange)

@@ -45,7 +45,8 @@ discoverFromKeypoints (
   * that observe the most of the matched landmarks to look alike
   * (DiscoveryParameters::verify_joins); empty (the default): no such check
   * \return false (with a PCL_ERROR, models unchanged) if a parameter is out of its range
-  * (validateDiscoveryParameters()) or the detector refuses a model
+  * (validateDiscoveryParameters()), `surface` has an organized frame but no pixel inside it
+  * for some keypoint of `frame`, or the detector refuses a model
   */
 bool
 mergeMatchingModels (const DiscoveryParameters& parameters,
