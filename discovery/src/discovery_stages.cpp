@@ -498,7 +498,9 @@ searchGuidedInstances (const DiscoveryParameters& p,
   return true;
 }
 
-/** A model of the keypoints of `patch` with one instance where they lie (identity pose). */
+/** A model of the keypoints of `patch` with one instance where they lie, its frame at their
+  * centroid with the camera's axes.
+  */
 ObjectModel
 patchModel (const DiscoveryResult& result, const pcl::Indices& patch)
 {
@@ -513,6 +515,7 @@ patchModel (const DiscoveryResult& result, const pcl::Indices& patch)
     model.descriptors.push_back ((*result.descriptors)[static_cast<std::size_t> (k)]);
   }
   model.instances.push_back (std::move (own));
+  centerModelFrame (model);
   updateModelDiameter (model);
   return model;
 }
@@ -920,8 +923,12 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
-      mergeBySize (p, frame, result))
+      mergeBySize (p, frame, result)) {
+    // Merges add landmarks in the frame of the model they join: every model is centred again.
+    for (auto& model : result.models)
+      centerModelFrame (model);
     return true;
+  }
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();
   result.triplets = result.clusters = result.rejected_clusters = 0;

@@ -120,21 +120,6 @@ estimateLandmarkNormals (ObjectModel& model, const KeypointCloud& keypoints)
   }
 }
 
-/** Move the model frame to the landmarks' centroid (poses compensate). */
-void
-centerModelFrame (ObjectModel& model)
-{
-  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-  for (const auto& l : model.landmarks)
-    centroid += l.getVector3fMap();
-  centroid /= static_cast<float> (std::max<std::size_t> (1, model.landmarks.size()));
-  for (auto& l : model.landmarks)
-    l.getVector3fMap() -= centroid;
-  for (auto& instance : model.instances)
-    instance.pose.topRightCorner<3, 1>() +=
-        instance.pose.topLeftCorner<3, 3>() * centroid;
-}
-
 } // namespace
 
 bool

@@ -102,4 +102,20 @@ updateModelDiameter (ObjectModel& model)
   model.diameter = diameter;
 }
 
+void
+centerModelFrame (ObjectModel& model)
+{
+  if (model.landmarks.empty())
+    return;
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (const auto& l : model.landmarks)
+    centroid += l.getVector3fMap();
+  centroid /= static_cast<float> (model.landmarks.size());
+  for (auto& l : model.landmarks)
+    l.getVector3fMap() -= centroid;
+  for (auto& instance : model.instances)
+    instance.pose.topRightCorner<3, 1>() +=
+        instance.pose.topLeftCorner<3, 3>() * centroid;
+}
+
 } // namespace mid

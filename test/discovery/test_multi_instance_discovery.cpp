@@ -79,6 +79,24 @@ expectRelativePosesMatch (const mid::test::RenderedObjectsScene& scene,
     }
 }
 
+/** The model frame lies at the landmarks' centroid, and every instance's pose still places
+  * the landmarks it observes on its keypoints.
+  */
+void
+expectCentredModelFrame (const mid::DiscoveryResult& result, const mid::ObjectModel& model)
+{
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (const auto& landmark : model.landmarks)
+    centroid += landmark.getVector3fMap();
+  centroid /= static_cast<float> (model.landmarks.size());
+  EXPECT_LT (centroid.norm(), 1e-4f);
+  for (const auto& instance : model.instances) {
+    mid::ModelInstance placed = instance;
+    mid::updateInstanceError (model, *result.keypoints, placed);
+    EXPECT_LT (placed.rms_error, 0.003f);
+  }
+}
+
 } // namespace
 
 TEST (MultiInstanceDiscovery, FindsThreeCopiesOfOneObjectWithTheirRelativePoses)
@@ -97,6 +115,7 @@ TEST (MultiInstanceDiscovery, FindsThreeCopiesOfOneObjectWithTheirRelativePoses)
   expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
   for (const auto& instance : model.instances)
     EXPECT_LT (instance.rms_error, 0.003f);
+  expectCentredModelFrame (result, model);
   EXPECT_GT (model.landmarks.size(), 20u);
   EXPECT_LT (model.diameter, 0.21f); // the box's diagonal is 0.20 m
 }
@@ -245,6 +264,8 @@ TEST (MultiInstanceDiscovery, FindsCopiesFromAPatchWhereNoClusterForms)
   ASSERT_EQ (boxes.size(), 2u);
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 2}));
   expectRelativePosesMatch (scene, result.models.front(), boxes, 2.0, 0.005);
+  // The patch's keypoints become landmarks in a frame centred on them, not the camera's.
+  expectCentredModelFrame (result, result.models.front());
   // Timed as its own stage, after the second round.
   std::vector<std::string> stages;
   for (const auto& stage : result.timing_ms)

@@ -493,3 +493,51 @@ TEST (ModelMerging, TwoPartialModelsOfOneObjectBecomeOne)
   for (const auto& instance : first.instances)
     EXPECT_LT (instance.rms_error, 1e-5f);
 }
+
+TEST (ModelFrame, CentringKeepsWhereEveryInstancePlacesTheLandmarks)
+{
+  // Landmarks around (0.3, -0.1, 0.9), seen by two instances at known rigid motions.
+  mid::ObjectModel model;
+  const std::vector<Eigen::Vector3f> points = {
+      {0.30f, -0.10f, 0.90f}, {0.36f, -0.08f, 0.92f}, {0.28f, -0.02f, 0.95f}};
+  for (const auto& point : points) {
+    pcl::PointNormal landmark;
+    landmark.getVector3fMap() = point;
+    landmark.getNormalVector3fMap() = Eigen::Vector3f (0.0f, 0.6f, -0.8f);
+    model.landmarks.push_back (landmark);
+  }
+  const std::vector<Eigen::Isometry3f> motions = {
+      mid::test::rigidMotion (Eigen::Vector3f::Zero()),
+      mid::test::rigidMotion (Eigen::Vector3f (0.1f, 0.2f, -0.05f), 0.7f, {1, 2, 3})};
+  for (const auto& motion : motions) {
+    mid::ModelInstance instance;
+    instance.pose = motion.matrix();
+    model.instances.push_back (instance);
+  }
+  mid::centerModelFrame (model);
+
+  const Eigen::Vector3f centroid =
+      (points[0] + points[1] + points[2]) / 3.0f; // where the frame moved to
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (std::size_t l = 0; l < points.size(); ++l) {
+    const Eigen::Vector3f landmark = model.landmarks[l].getVector3fMap();
+    sum += landmark;
+    EXPECT_LT ((landmark - (points[l] - centroid)).norm(), 1e-6f);
+    EXPECT_TRUE (model.landmarks[l].getNormalVector3fMap().isApprox (
+        Eigen::Vector3f (0.0f, 0.6f, -0.8f)));
+    for (std::size_t i = 0; i < motions.size(); ++i) {
+      const Eigen::Matrix4f& pose = model.instances[i].pose;
+      const Eigen::Vector3f placed =
+          pose.topLeftCorner<3, 3>() * landmark + pose.topRightCorner<3, 1>();
+      EXPECT_LT ((placed - motions[i] * points[l]).norm(), 1e-6f);
+      const Eigen::Matrix3f rotation = pose.topLeftCorner<3, 3>();
+      EXPECT_LT ((rotation - motions[i].linear()).norm(), 1e-6f);
+    }
+  }
+  EXPECT_LT (sum.norm(), 1e-6f);
+
+  mid::ObjectModel empty;
+  empty.instances.resize (1);
+  mid::centerModelFrame (empty);
+  EXPECT_TRUE (empty.instances.front().pose.isIdentity());
+}

@@ -12,7 +12,8 @@ namespace mid {
   * Appends the stages' times to result.timing_ms. With a peer grouping (PCL's classes) the
   * "triplets" stage is empty and "clustering" times the peer.
   * \param[in] parameters the parameters
-  * \param[in,out] result keypoints and descriptors in; matches, counts, models and times out
+  * \param[in,out] result keypoints and descriptors in; matches, counts, models and times out;
+  * every model's frame is centred on its landmarks (centerModelFrame())
   * \param[in] surface the frame's points with normals; needed by Grouping::hough3d only
   * \param[in] organized the organized colour frame the keypoints were found in, with
   * result.image_keypoints giving their pixels (ImageKeypoint::pixel_index); optional: it lets

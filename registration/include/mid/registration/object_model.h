@@ -115,4 +115,14 @@ extractModelPart (const ObjectModel& model,
 void
 updateModelDiameter (ObjectModel& model);
 
+/** \brief Move a model's frame to its landmarks' centroid, keeping its axes: the landmarks
+  * are shifted and every instance's pose compensates, so each instance still places every
+  * landmark where it was in the camera frame (nothing changes for a model without landmarks).
+  * The builder's models are centred so; a model whose landmarks were added or taken (merges,
+  * a model made from keypoints in the camera frame) is centred again with this.
+  * \param[in,out] model its landmarks and its instances' poses are moved
+  */
+void
+centerModelFrame (ObjectModel& model);
+
 } // namespace mid
