@@ -83,7 +83,8 @@ expectRelativePosesMatch (const mid::test::RenderedObjectsScene& scene,
   * the landmarks it observes on its keypoints.
   */
 void
-expectCentredModelFrame (const mid::DiscoveryResult& result, const mid::ObjectModel& model)
+expectCentredModelFrame (const mid::DiscoveryResult& result,
+                         const mid::ObjectModel& model)
 {
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
   for (const auto& landmark : model.landmarks)
