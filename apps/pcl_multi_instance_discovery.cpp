@@ -172,6 +172,12 @@ printHelp (const char* program)
   line ("-size_rel_tol R",
         "size merge: ... or R times the edge, if larger",
         static_cast<double> (d.relative_size_tolerance));
+  line ("-size_kp N",
+        "size search: free keypoints an object needs to become an instance",
+        d.size_search_min_keypoints);
+  line ("-size_agree N",
+        "size search: copies of a model that must agree on its size",
+        d.size_search_min_agreeing);
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -229,6 +235,10 @@ printHelp (const char* program)
       "on the\n");
   print_info ("                      table (the paper's behaviour)\n");
   print_info (
+      "  -no_size_search     do not look for copies of a model's size that show none "
+      "of its\n");
+  print_info ("                      landmarks (the paper's behaviour)\n");
+  print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
   print_info (
@@ -273,6 +283,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_size_merge", 0},
                                       {"-size_tol", 1},
                                       {"-size_rel_tol", 1},
+                                      {"-no_size_search", 0},
+                                      {"-size_kp", 1},
+                                      {"-size_agree", 1},
                                       {"-split_corr", 1},
                                       {"-guided_seed_dist", 1},
                                       {"-guided_desc_dist", 1},
@@ -362,6 +375,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
+  p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -409,6 +423,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-surface_iterations", p.surface_iterations) &&
       parseNumber (argc, argv, "-size_tol", p.size_tolerance) &&
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
+      parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&
+      parseNumber (argc, argv, "-size_agree", p.size_search_min_agreeing) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

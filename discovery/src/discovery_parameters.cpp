@@ -238,6 +238,14 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "relative_size_tolerance",
              static_cast<double> (p.relative_size_tolerance),
              "finite and >= 0");
+  c.require (p.size_search_min_keypoints >= 1,
+             "size_search_min_keypoints",
+             p.size_search_min_keypoints,
+             ">= 1");
+  c.require (p.size_search_min_agreeing >= 1,
+             "size_search_min_agreeing",
+             p.size_search_min_agreeing,
+             ">= 1");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

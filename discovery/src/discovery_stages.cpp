@@ -16,6 +16,7 @@
 #include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/photometric_verification.h>
+#include <mid/segmentation/size_instance_search.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/surface_pose_refinement.h>
 #include <mid/segmentation/transformation_space_clustering.h>
@@ -811,6 +812,36 @@ mergeBySize (const DiscoveryParameters& p,
   return true;
 }
 
+/** Find the copies of a model that show none of its landmarks by their size
+  * (DiscoveryParameters::size_search), when the organized frame is known; times the
+  * "size_search" stage either way.
+  */
+bool
+searchBySize (const DiscoveryParameters& p,
+              const KeypointSurface& frame,
+              DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.size_search && frame.organized) {
+    KeypointSurface keypoint_surface;
+    keypoint_surface.organized = frame.organized;
+    for (const auto& k : result.image_keypoints)
+      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+    SizeInstanceSearch search;
+    search.setInputKeypoints (result.keypoints);
+    search.setInputDescriptors (result.descriptors);
+    search.setKeypointSurface (keypoint_surface);
+    search.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
+    search.setMinAgreeing (p.size_search_min_agreeing);
+    search.setMinKeypoints (p.size_search_min_keypoints);
+    std::size_t found = 0;
+    if (!search.search (result.models, found))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_search", watch.getTime());
+  return true;
+}
+
 /** discoverFromKeypoints() without its cleanup on failure. */
 bool
 runStages (const DiscoveryParameters& p,
@@ -923,7 +954,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
-      mergeBySize (p, frame, result)) {
+      mergeBySize (p, frame, result) && searchBySize (p, frame, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)
       centerModelFrame (model);

@@ -1,6 +1,6 @@
 // ModelSizeMerger and the box measurement under it, on rendered boxes resting on a table at
 // known poses.
-#include "rendered_keypoints.h"
+#include "resting_boxes.h"
 
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size_merger.h>
@@ -21,113 +21,22 @@ using mid::test::kApplePrint;
 using mid::test::kPrintedBoxSize;
 using mid::test::kSoyPrint;
 
-/** The table the boxes rest on, facing the camera (metres). */
-constexpr double kTableDepth = 0.95;
+using mid::test::fourBoxes;
+using mid::test::insideBox;
+using mid::test::kTableDepth;
+using mid::test::restingBox;
+using mid::test::rotationErrorModuloBox;
+using mid::test::twoApartTwoTouching;
+using Boxes = mid::test::RestingBoxes;
 
-/** A box of the given size lying on the table at (x, y), turned by `roll` degrees. */
-mid::test::BoxSpec
-restingBox (const char* print,
-            double x,
-            double y,
-            double roll,
-            const Eigen::Vector3d& size = kPrintedBoxSize)
+mid::ModelSizeMerger
+mergerFor (const Boxes& scene)
 {
-  return {print, size, boxPose (x, y, kTableDepth - 0.5 * size.z(), roll)};
+  mid::ModelSizeMerger merger;
+  merger.setInputKeypoints (scene.keypoints);
+  merger.setKeypointSurface (scene.surface);
+  return merger;
 }
-
-/** Four boxes apart on the table: 0 and 1 with one print, 2 and 3 with another. */
-std::vector<mid::test::BoxSpec>
-fourBoxes (const Eigen::Vector3d& size_of_2_and_3 = kPrintedBoxSize)
-{
-  return {restingBox (kApplePrint, -0.16, -0.1, 10.0),
-          restingBox (kApplePrint, 0.16, -0.12, -35.0),
-          restingBox (kSoyPrint, -0.15, 0.12, 70.0, size_of_2_and_3),
-          restingBox (kSoyPrint, 0.17, 0.11, 160.0, size_of_2_and_3)};
-}
-
-/** The proper rotations that map a box with three different edges onto itself. */
-std::array<Eigen::Matrix3f, 4>
-boxSymmetries ()
-{
-  return {Eigen::Matrix3f::Identity(),
-          Eigen::Matrix3f (
-              Eigen::AngleAxisf (static_cast<float> (M_PI), Eigen::Vector3f::UnitX())),
-          Eigen::Matrix3f (
-              Eigen::AngleAxisf (static_cast<float> (M_PI), Eigen::Vector3f::UnitY())),
-          Eigen::Matrix3f (
-              Eigen::AngleAxisf (static_cast<float> (M_PI), Eigen::Vector3f::UnitZ()))};
-}
-
-/** Rotation error (degrees) of `pose` against the box's true pose, modulo the box's
-  * symmetries (the model frame is the box's own frame).
-  */
-double
-rotationErrorModuloBox (const Eigen::Matrix4f& pose, const Eigen::Isometry3d& truth)
-{
-  double best = 180.0;
-  for (const auto& s : boxSymmetries()) {
-    const Eigen::Matrix3f expected = truth.linear().cast<float>() * s;
-    const Eigen::AngleAxisf error (expected.transpose() * pose.topLeftCorner<3, 3>());
-    best = std::min (best, static_cast<double> (error.angle()) * 180.0 / M_PI);
-  }
-  return best;
-}
-
-/** True if `point` lies in the box (within 2 mm). */
-bool
-insideBox (const mid::test::BoxSpec& box, const Eigen::Vector3f& point)
-{
-  const Eigen::Vector3d local = box.pose.inverse() * point.cast<double>();
-  return (local.cwiseAbs() - 0.5 * box.size).maxCoeff() < 0.002;
-}
-
-struct Boxes : mid::test::RenderedKeypoints
-{
-  explicit Boxes (const std::vector<mid::test::BoxSpec>& boxes,
-                  double table = kTableDepth)
-  : RenderedKeypoints (mid::test::renderBoxes (boxes, table))
-  {}
-
-  /** A model of the given boxes at their true poses, in the frame of the first box moved by
-    * `frame` (model -> box), so that two models' frames differ.
-    */
-  mid::ObjectModel
-  modelOf (const std::vector<std::size_t>& boxes,
-           const Eigen::Isometry3f& frame = Eigen::Isometry3f::Identity()) const
-  {
-    mid::ObjectModel model;
-    for (const auto b : boxes)
-      addTruthInstance (b, model);
-    for (auto& instance : model.instances)
-      instance.pose = instance.pose * frame.matrix();
-    const Eigen::Isometry3f to_model = frame.inverse();
-    for (auto& landmark : model.landmarks) {
-      landmark.getVector3fMap() = to_model * landmark.getVector3fMap();
-      landmark.getNormalVector3fMap() =
-          to_model.linear() * landmark.getNormalVector3fMap();
-    }
-    return model;
-  }
-
-  mid::ModelSizeMerger
-  merger () const
-  {
-    mid::ModelSizeMerger merger;
-    merger.setInputKeypoints (keypoints);
-    merger.setKeypointSurface (surface);
-    return merger;
-  }
-
-  /** The pixels of the keypoints on box b. */
-  pcl::Indices
-  seedsOn (int b) const
-  {
-    pcl::Indices seeds;
-    for (const auto k : on ({b}))
-      seeds.push_back (surface.keypoint_pixels[static_cast<std::size_t> (k)]);
-    return seeds;
-  }
-};
 
 TEST (InstanceExtent, MeasuresABoxRestingOnTheTable)
 {
@@ -253,7 +162,7 @@ TEST (ModelSizeMerger, MergesTwoModelsOfOneBoxSizeIntoTheBoxFrame)
                               scene.modelOf ({2, 3}, other_frame)};
   const std::size_t landmarks = models[0].landmarks.size() + models[1].landmarks.size();
 
-  ASSERT_TRUE (scene.merger().merge (models));
+  ASSERT_TRUE (mergerFor (scene).merge (models));
   ASSERT_EQ (models.size(), 1u);
   ASSERT_EQ (models[0].instances.size(), 4u);
   EXPECT_EQ (models[0].landmarks.size(), landmarks);
@@ -277,22 +186,10 @@ TEST (ModelSizeMerger, KeepsModelsOfDifferentSizesApart)
 {
   const Boxes scene (fourBoxes ({0.1, 0.09, 0.04}));
   mid::ObjectModels models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3})};
-  ASSERT_TRUE (scene.merger().merge (models));
+  ASSERT_TRUE (mergerFor (scene).merge (models));
   ASSERT_EQ (models.size(), 2u);
   EXPECT_EQ (models[0].instances.size(), 2u);
   EXPECT_EQ (models[1].instances.size(), 2u);
-}
-
-/** Boxes 0 and 1 (one print) apart, boxes 2 and 3 (another print) touching along their long
-  * edges, so that their tops join in one flat surface.
-  */
-std::vector<mid::test::BoxSpec>
-twoApartTwoTouching (const Eigen::Vector3d& size_of_0_and_1 = kPrintedBoxSize)
-{
-  return {restingBox (kApplePrint, -0.16, -0.1, 10.0, size_of_0_and_1),
-          restingBox (kApplePrint, 0.16, -0.12, -35.0, size_of_0_and_1),
-          restingBox (kSoyPrint, 0.0, 0.1, 0.0),
-          restingBox (kSoyPrint, 0.0, 0.19, 180.0)};
 }
 
 TEST (InstanceExtent, SplitsTheJoinedSurfaceOfTouchingCopies)
@@ -335,7 +232,7 @@ TEST (ModelSizeMerger, KeepsTouchingCopiesApartFromABoxOfTheirJoinedSize)
   // of 2 and 3 would give their model the size of the other.
   const Boxes scene (twoApartTwoTouching ({0.12, 0.18, 0.04}));
   mid::ObjectModels models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3})};
-  ASSERT_TRUE (scene.merger().merge (models));
+  ASSERT_TRUE (mergerFor (scene).merge (models));
   EXPECT_EQ (models.size(), 2u);
 }
 
@@ -351,7 +248,7 @@ TEST (ModelSizeMerger, MergesCopiesShowingAnotherFaceUp)
                       restingBox (kSoyPrint, 0.17, 0.11, 160.0, on_side),
                       restingBox (kSoyPrint, 0.0, 0.0, 95.0, on_side)});
   mid::ObjectModels models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3, 4})};
-  ASSERT_TRUE (scene.merger().merge (models));
+  ASSERT_TRUE (mergerFor (scene).merge (models));
   ASSERT_EQ (models.size(), 1u);
   ASSERT_EQ (models[0].instances.size(), 5u);
   // The merged model keeps box 2's frame. Box 0's axes x (0.12), y (0.09), z (0.04) are box 2's
@@ -420,32 +317,32 @@ TEST (ModelSizeMerger, RefusesBadInputAndLeavesTheModels)
     EXPECT_FALSE (merger.merge (models));
     EXPECT_EQ (models.size(), original.size());
   };
-  mid::ModelSizeMerger no_keypoints = scene.merger();
+  mid::ModelSizeMerger no_keypoints = mergerFor (scene);
   no_keypoints.setInputKeypoints (nullptr);
   refuses (no_keypoints, original);
 
-  mid::ModelSizeMerger no_pixels = scene.merger();
+  mid::ModelSizeMerger no_pixels = mergerFor (scene);
   mid::KeypointSurface without_pixels = scene.surface;
   without_pixels.keypoint_pixels.clear();
   no_pixels.setKeypointSurface (without_pixels);
   refuses (no_pixels, original);
 
-  mid::ModelSizeMerger negative = scene.merger();
+  mid::ModelSizeMerger negative = mergerFor (scene);
   negative.setSizeTolerance (-0.001f, 0.03f);
   refuses (negative, original);
 
-  mid::ModelSizeMerger no_step = scene.merger();
+  mid::ModelSizeMerger no_step = mergerFor (scene);
   no_step.setMaxStep (0.0f);
   refuses (no_step, original);
 
-  mid::ModelSizeMerger nobody = scene.merger();
+  mid::ModelSizeMerger nobody = mergerFor (scene);
   nobody.setMinAgreeing (0);
   refuses (nobody, original);
 
   mid::ObjectModels outside = original;
   outside[1].instances[0].keypoints[0] =
       static_cast<pcl::index_t> (scene.keypoints->size());
-  refuses (scene.merger(), outside);
+  refuses (mergerFor (scene), outside);
 }
 
 } // namespace

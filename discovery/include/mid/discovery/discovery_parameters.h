@@ -313,6 +313,19 @@ struct DiscoveryParameters
   float size_tolerance = 0.006f;
   float relative_size_tolerance = 0.03f;
   ///@}
+  /** \brief After the size merge, find the copies that show none of a model's landmarks by
+    * the size of the box they occupy on the support plane (not in the paper;
+    * SizeInstanceSearch): an object on the table that holds no instance's keypoint, at least
+    * size_search_min_keypoints keypoints (>= 1) and the size of a model (size_tolerance,
+    * relative_size_tolerance) becomes its instance, when at least size_search_min_agreeing
+    * (>= 1) of the model's measured copies agree on that size. Its pose is right only up to
+    * the box's symmetries. Needs the organized frame.
+    */
+  ///@{
+  bool size_search = true;
+  int size_search_min_keypoints = 3;
+  int size_search_min_agreeing = 2;
+  ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).
     */

@@ -1,0 +1,88 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/types.h>
+
+#include <vector>
+
+namespace mid {
+
+/** \brief Share of the frame's valid points that its support plane must hold for the steps
+  * that measure boxes on it (fitSupportPlane()).
+  */
+constexpr float kMinSupportPlaneShare = 0.2f;
+
+/** \brief Whether two box sizes (edges ascending, metres) are one size: each edge differs by
+  * at most the larger of an absolute tolerance and a relative one times the longer edge.
+  */
+class SizeAgreement
+{
+public:
+  /** \param[in] absolute metres, >= 0
+    * \param[in] relative share of the longer of two edges, >= 0
+    */
+  SizeAgreement (float absolute, float relative)
+  : absolute_ (absolute), relative_ (relative)
+  {}
+
+  /** \brief True if the sizes a and b agree edge by edge. */
+  bool
+  operator() (const Eigen::Vector3f& a, const Eigen::Vector3f& b) const;
+
+private:
+  float absolute_, relative_;
+};
+
+/** \brief The size of the box a model's copies occupy on the support plane (not in the paper). */
+struct ModelSize
+{
+  /** \brief True if at least the required number of measured instances agree on `size`. */
+  bool valid = false;
+  /** \brief Box edges (metres), ascending. */
+  Eigen::Vector3f size = Eigen::Vector3f::Zero();
+  /** \brief Box frame -> model frame: the box of the instance that gave `size`, in the model
+    * frame (axes along the edges in the order of `size`, origin at its centre).
+    */
+  Eigen::Matrix4f box_in_model = Eigen::Matrix4f::Identity();
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+/** \brief One ModelSize per model. */
+using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
+
+/** \brief Measure the box every model's copies occupy on the support plane.
+  *
+  * The surfaces of all instances of all models grow at once from their keypoints' pixels
+  * (growInstanceSurfaces()), a box is fitted to each (fitInstanceBox()), and each model takes
+  * the size that most of its measured instances agree on (ties: the instance with the smaller
+  * surface, as a surface is more often too large, joined with something, than too small).
+  * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)
+  * \param[in] plane the support plane (fitSupportPlane())
+  * \param[in] keypoint_pixels each keypoint's pixel in `organized` (row * width + column)
+  * \param[in] models the models; their observations must index keypoint_pixels (not checked)
+  * \param[in] max_step, max_radius, plane_tolerance the growth (growInstanceSurfaces())
+  * \param[in] agree when two sizes are one
+  * \param[in] min_agreeing measured instances that must agree on a size (ModelSize::valid)
+  * \param[out] sizes one per model, in order
+  * \return false (with a PCL_ERROR, sizes empty) if the growth refuses the frame or a seed
+  */
+bool
+measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                   const Eigen::Vector4f& plane,
+                   const pcl::Indices& keypoint_pixels,
+                   const ObjectModels& models,
+                   float max_step,
+                   float max_radius,
+                   float plane_tolerance,
+                   const SizeAgreement& agree,
+                   int min_agreeing,
+                   ModelSizes& sizes);
+
+} // namespace mid

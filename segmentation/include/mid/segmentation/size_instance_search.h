@@ -1,0 +1,220 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+#include <mid/segmentation/surface_gap.h>
+
+#include <string>
+
+namespace mid {
+
+/** \brief Finds the copies of a model that show none of its landmarks, by the size of the box
+  * they occupy on the support plane (not in the paper).
+  *
+  * A copy lying with a face up that no other copy shows has nothing to match: no descriptor,
+  * no cluster, no RANSAC can find it, whatever the method's thresholds (on the benchmark, most
+  * of the instances that share fewer than 10 cm^2 of textured surface with any other copy).
+  * Its depth still says that it is a box of the model's size. This step:
+  *
+  * 1. fits the frame's support plane and measures the box each model's copies occupy on it
+  *    (measureModelSizes()); a model takes part when at least `min_agreeing` of its measured
+  *    copies agree on one size;
+  * 2. grows the surfaces of all instances and of every keypoint that no instance observes at
+  *    once (growInstanceSurfaces(): stopped at creases and depth steps), and joins the
+  *    surfaces that touch into objects;
+  * 3. fits a box to each object that holds no instance's keypoint and at least
+  *    `min_keypoints` free keypoints, and gives it to the model whose size it agrees with
+  *    (the closest, edge by edge, if several do) as a new instance: its pose is the one that
+  *    brings the model's box onto the object's, right up to the box's symmetries (a half
+  *    turn of a box, a quarter turn of a square one; which face the copy shows is what is
+  *    not known); its free keypoints become landmarks of the model, with their descriptors.
+  *
+  * An object touching another is measured with it and agrees with no model's size; an object
+  * occluded in part is measured too small: both are left alone. A product of another type
+  * that has the same size within the tolerance is taken for a copy: the step trades those for
+  * the copies that show an unmatched face, far more common on a table of several copies of
+  * one product. Deterministic (the plane's hypotheses are drawn with a fixed seed).
+  */
+class SizeInstanceSearch
+{
+public:
+  /** \brief The frame's keypoints that the models' observations index (camera frame, metres).
+    * Required.
+    */
+  ///@{
+  void
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
+  const KeypointCloud::ConstPtr&
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
+  ///@}
+
+  /** \brief The keypoints' descriptors (one per keypoint), which the new landmarks keep.
+    * Required.
+    */
+  ///@{
+  void
+  setInputDescriptors (const SIFTDescriptorCloud::ConstPtr& descriptors)
+  {
+    descriptors_ = descriptors;
+  }
+  const SIFTDescriptorCloud::ConstPtr&
+  getInputDescriptors () const
+  {
+    return descriptors_;
+  }
+  ///@}
+
+  /** \brief The organized frame and each keypoint's pixel in it. Required: the organized
+    * frame and the keypoint pixels; grey levels and projection are not read.
+    */
+  ///@{
+  void
+  setKeypointSurface (const KeypointSurface& surface)
+  {
+    surface_ = surface;
+  }
+  const KeypointSurface&
+  getKeypointSurface () const
+  {
+    return surface_;
+  }
+  ///@}
+
+  /** \brief Largest distance between two neighbouring pixels' points of one surface (metres,
+    * default 0.008, > 0).
+    */
+  ///@{
+  void
+  setMaxStep (float step)
+  {
+    max_step_ = step;
+  }
+  float
+  getMaxStep () const
+  {
+    return max_step_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a surface point from its seeds' centroid (metres, default
+    * 0.3, > 0): bounds the objects that can be measured.
+    */
+  ///@{
+  void
+  setMaxRadius (float radius)
+  {
+    max_radius_ = radius;
+  }
+  float
+  getMaxRadius () const
+  {
+    return max_radius_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
+    * > 0).
+    */
+  ///@{
+  void
+  setPlaneTolerance (float tolerance)
+  {
+    plane_tolerance_ = tolerance;
+  }
+  float
+  getPlaneTolerance () const
+  {
+    return plane_tolerance_;
+  }
+  ///@}
+
+  /** \brief Two sizes agree when each edge differs by at most the larger of `absolute`
+    * (metres, default 0.006, >= 0) and `relative` times the longer of the two edges (default
+    * 0.03, >= 0).
+    */
+  ///@{
+  void
+  setSizeTolerance (float absolute, float relative)
+  {
+    size_tolerance_ = absolute;
+    relative_size_tolerance_ = relative;
+  }
+  float
+  getSizeTolerance () const
+  {
+    return size_tolerance_;
+  }
+  float
+  getRelativeSizeTolerance () const
+  {
+    return relative_size_tolerance_;
+  }
+  ///@}
+
+  /** \brief Measured copies of a model that must agree on its size before copies are looked
+    * for by it (default 2, >= 1).
+    */
+  ///@{
+  void
+  setMinAgreeing (int count)
+  {
+    min_agreeing_ = count;
+  }
+  int
+  getMinAgreeing () const
+  {
+    return min_agreeing_;
+  }
+  ///@}
+
+  /** \brief Free keypoints an object must hold to become an instance (default 3, >= 1): what
+    * the instance reports as its keypoints, and a guard against plain boxes.
+    */
+  ///@{
+  void
+  setMinKeypoints (int count)
+  {
+    min_keypoints_ = count;
+  }
+  int
+  getMinKeypoints () const
+  {
+    return min_keypoints_;
+  }
+  ///@}
+
+  /** \brief Add the copies found by their size to the models.
+    * \param[in,out] models the frame's models; each keeps its instances and landmarks, in
+    * order, and gains the instances found (after its own) and their keypoints as landmarks.
+    * Without a support plane, or without a model of a measured size, nothing changes.
+    * \param[out] found how many instances were added
+    * \return false (with a PCL_ERROR, models unchanged, found 0) on missing or inconsistent
+    * input, a parameter out of range, or an observation outside the keypoints
+    */
+  bool
+  search (ObjectModels& models, std::size_t& found) const;
+
+private:
+  /** \brief What is wrong with the input, parameters or `models`; empty if nothing. */
+  std::string
+  inputProblem (const ObjectModels& models) const;
+
+  KeypointCloud::ConstPtr keypoints_;
+  SIFTDescriptorCloud::ConstPtr descriptors_;
+  KeypointSurface surface_;
+  float max_step_ = 0.008f;
+  float max_radius_ = 0.3f;
+  float plane_tolerance_ = 0.01f;
+  float size_tolerance_ = 0.006f;
+  float relative_size_tolerance_ = 0.03f;
+  int min_agreeing_ = 2;
+  int min_keypoints_ = 3;
+};
+
+} // namespace mid

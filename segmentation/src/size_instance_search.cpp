@@ -1,0 +1,256 @@
+#include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/model_size.h>
+#include <mid/segmentation/size_instance_search.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace mid {
+
+namespace {
+
+/** Disjoint sets of seeds (union-find with path halving). */
+class SeedSets
+{
+public:
+  explicit SeedSets (std::size_t size) : parent_ (size)
+  {
+    std::iota (parent_.begin(), parent_.end(), std::size_t{0});
+  }
+
+  std::size_t
+  find (std::size_t s)
+  {
+    while (parent_[s] != s)
+      s = parent_[s] = parent_[parent_[s]];
+    return s;
+  }
+
+  void
+  join (std::size_t a, std::size_t b)
+  {
+    a = find (a);
+    b = find (b);
+    if (a != b)
+      parent_[std::max (a, b)] = std::min (a, b);
+  }
+
+private:
+  std::vector<std::size_t> parent_;
+};
+
+/** Join the seeds whose surfaces touch: two 4-neighbouring pixels of two surfaces whose points
+  * are closer than max_step.
+  */
+void
+joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const std::vector<pcl::Indices>& surfaces,
+                      float max_step,
+                      SeedSets& sets)
+{
+  constexpr int kNone = -1;
+  std::vector<int> label (organized.size(), kNone);
+  for (std::size_t s = 0; s < surfaces.size(); ++s)
+    for (const auto pixel : surfaces[s])
+      label[static_cast<std::size_t> (pixel)] = static_cast<int> (s);
+  const auto width = static_cast<std::size_t> (organized.width);
+  for (std::size_t pixel = 0; pixel < label.size(); ++pixel) {
+    if (label[pixel] == kNone)
+      continue;
+    const bool has_right = (pixel + 1) % width != 0;
+    for (const std::size_t next : {has_right ? pixel + 1 : pixel, pixel + width}) {
+      if (next == pixel || next >= label.size() || label[next] == kNone ||
+          label[next] == label[pixel])
+        continue;
+      if ((organized[next].getVector3fMap() - organized[pixel].getVector3fMap())
+              .norm() < max_step)
+        sets.join (static_cast<std::size_t> (label[pixel]),
+                   static_cast<std::size_t> (label[next]));
+    }
+  }
+}
+
+/** The model whose size `size` agrees with, the closest edge by edge if several do; -1 if
+  * none.
+  */
+int
+modelOfSize (const Eigen::Vector3f& size,
+             const ModelSizes& sizes,
+             const SizeAgreement& agree)
+{
+  int best = -1;
+  float best_difference = std::numeric_limits<float>::infinity();
+  for (std::size_t m = 0; m < sizes.size(); ++m) {
+    if (!sizes[m].valid || !agree (sizes[m].size, size))
+      continue;
+    const float difference = (sizes[m].size - size).cwiseAbs().maxCoeff();
+    if (difference < best_difference) {
+      best = static_cast<int> (m);
+      best_difference = difference;
+    }
+  }
+  return best;
+}
+
+/** A new instance of `model` at `pose` (model -> camera) observing `keypoints`, each added as
+  * a landmark with its descriptor.
+  */
+void
+addInstance (const KeypointCloud& keypoints,
+             const SIFTDescriptorCloud& descriptors,
+             const pcl::Indices& observed,
+             const Eigen::Matrix4f& pose,
+             ObjectModel& model)
+{
+  const Eigen::Matrix4f camera_to_model = pose.inverse();
+  ModelInstance instance;
+  instance.pose = pose;
+  for (const auto k : observed) {
+    const auto& keypoint = keypoints[static_cast<std::size_t> (k)];
+    pcl::PointNormal landmark = keypoint;
+    landmark.getVector3fMap() =
+        camera_to_model.topLeftCorner<3, 3>() * keypoint.getVector3fMap() +
+        camera_to_model.topRightCorner<3, 1>();
+    landmark.getNormalVector3fMap() =
+        camera_to_model.topLeftCorner<3, 3>() * keypoint.getNormalVector3fMap();
+    const auto index = static_cast<int> (model.landmarks.size());
+    model.landmarks.push_back (landmark);
+    model.descriptors.push_back (descriptors[static_cast<std::size_t> (k)]);
+    model.descriptor_landmarks.push_back (index);
+    instance.keypoints.push_back (k);
+    instance.landmarks.push_back (index);
+  }
+  updateInstanceError (model, keypoints, instance);
+  model.instances.push_back (instance);
+  updateModelDiameter (model);
+}
+
+} // namespace
+
+std::string
+SizeInstanceSearch::inputProblem (const ObjectModels& models) const
+{
+  if (!keypoints_ || !descriptors_)
+    return "no input keypoints or descriptors";
+  if (descriptors_->size() != keypoints_->size())
+    return "the descriptors are not one per keypoint";
+  if (!isValidKeypointSurface (surface_, keypoints_->size()))
+    return "the keypoint surface is not an organized frame holding every keypoint's "
+           "pixel";
+  if (!(max_step_ > 0.0f) || !(max_radius_ > 0.0f) || !(plane_tolerance_ > 0.0f))
+    return "the step, radius and plane tolerance must be > 0";
+  if (!(size_tolerance_ >= 0.0f) || !(relative_size_tolerance_ >= 0.0f))
+    return "the size tolerances must be >= 0";
+  if (min_agreeing_ < 1 || min_keypoints_ < 1)
+    return "at least one instance must agree on a size, and one keypoint make an "
+           "instance";
+  for (const auto& model : models)
+    for (const auto& instance : model.instances)
+      for (const auto k : instance.keypoints)
+        if (k < 0 || static_cast<std::size_t> (k) >= keypoints_->size())
+          return "an instance observes a keypoint outside the input keypoints";
+  return "";
+}
+
+bool
+SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
+{
+  found = 0;
+  const std::string problem = inputProblem (models);
+  if (!problem.empty()) {
+    PCL_ERROR ("[mid::SizeInstanceSearch::search] %s.\n", problem.c_str());
+    return false;
+  }
+  if (models.empty())
+    return true;
+  const auto& organized = *surface_.organized;
+  Eigen::Vector4f plane;
+  if (!fitSupportPlane (organized, plane_tolerance_, kMinSupportPlaneShare, plane))
+    return true;
+  const SizeAgreement agree (size_tolerance_, relative_size_tolerance_);
+  ModelSizes sizes;
+  if (!measureModelSizes (organized,
+                          plane,
+                          surface_.keypoint_pixels,
+                          models,
+                          max_step_,
+                          max_radius_,
+                          plane_tolerance_,
+                          agree,
+                          min_agreeing_,
+                          sizes))
+    return false;
+  if (std::none_of (sizes.begin(), sizes.end(), [] (const ModelSize& size) {
+        return size.valid;
+      }))
+    return true;
+
+  // Seeds: every instance (its keypoints' pixels), then every keypoint no instance observes.
+  std::vector<bool> observed (keypoints_->size(), false);
+  std::vector<pcl::Indices> seeds;
+  for (const auto& model : models)
+    for (const auto& instance : model.instances) {
+      seeds.emplace_back();
+      for (const auto k : instance.keypoints) {
+        observed[static_cast<std::size_t> (k)] = true;
+        seeds.back().push_back (surface_.keypoint_pixels[static_cast<std::size_t> (k)]);
+      }
+    }
+  const std::size_t instance_seeds = seeds.size();
+  pcl::Indices free;
+  for (std::size_t k = 0; k < observed.size(); ++k)
+    if (!observed[k]) {
+      free.push_back (static_cast<pcl::index_t> (k));
+      seeds.push_back ({surface_.keypoint_pixels[k]});
+    }
+  std::vector<pcl::Indices> surfaces;
+  if (!growInstanceSurfaces (
+          organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, surfaces))
+    return false;
+  SeedSets sets (seeds.size());
+  joinTouchingSurfaces (organized, surfaces, max_step_, sets);
+
+  // Objects of free keypoints alone: an instance's seed is the smallest of its set.
+  std::vector<std::vector<std::size_t>> objects (seeds.size());
+  for (std::size_t s = instance_seeds; s < seeds.size(); ++s)
+    if (sets.find (s) >= instance_seeds && !surfaces[s].empty())
+      objects[sets.find (s)].push_back (s);
+  const std::vector<std::size_t> old_sizes = [&models] {
+    std::vector<std::size_t> counts;
+    for (const auto& model : models)
+      counts.push_back (model.instances.size());
+    return counts;
+  }();
+  for (const auto& object : objects) {
+    if (object.size() < static_cast<std::size_t> (min_keypoints_))
+      continue;
+    pcl::Indices pixels, keypoints;
+    for (const std::size_t s : object) {
+      pixels.insert (pixels.end(), surfaces[s].begin(), surfaces[s].end());
+      keypoints.push_back (free[s - instance_seeds]);
+    }
+    InstanceExtent extent;
+    if (!fitInstanceBox (organized, plane, pixels, extent))
+      continue;
+    const int m = modelOfSize (extent.size, sizes, agree);
+    if (m < 0)
+      continue;
+    auto& model = models[static_cast<std::size_t> (m)];
+    addInstance (*keypoints_,
+                 *descriptors_,
+                 keypoints,
+                 extent.pose *
+                     sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
+                 model);
+  }
+  for (std::size_t m = 0; m < models.size(); ++m)
+    found += models[m].instances.size() - old_sizes[m];
+  return true;
+}
+
+} // namespace mid

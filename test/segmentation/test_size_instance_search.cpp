@@ -1,0 +1,168 @@
+// SizeInstanceSearch on rendered boxes resting on a table at known poses: copies that show
+// none of a model's landmarks, found by the size of their box.
+#include "resting_boxes.h"
+
+#include <mid/segmentation/size_instance_search.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace {
+
+using mid::test::fourBoxes;
+using mid::test::kApplePrint;
+using mid::test::kSoyPrint;
+using mid::test::restingBox;
+using mid::test::rotationErrorModuloBox;
+using mid::test::twoApartTwoTouching;
+using Boxes = mid::test::RestingBoxes;
+
+/** Edges 0.12 (x), 0.04 and 0.09: the printed box lying on its 0.12 x 0.04 face. */
+const Eigen::Vector3d kOnSide (0.12, 0.04, 0.09);
+
+/** Boxes 0 and 1 lie flat with one print; box 2 is the same box on its side with another
+  * print, so that no descriptor links it to them.
+  */
+std::vector<mid::test::BoxSpec>
+twoFlatOneOnItsSide ()
+{
+  return {restingBox (kApplePrint, -0.16, -0.1, 10.0),
+          restingBox (kApplePrint, 0.16, -0.12, -35.0),
+          restingBox (kSoyPrint, 0.0, 0.12, 70.0, kOnSide)};
+}
+
+mid::SizeInstanceSearch
+searchIn (const Boxes& scene)
+{
+  mid::SizeInstanceSearch search;
+  search.setInputKeypoints (scene.keypoints);
+  search.setInputDescriptors (scene.descriptors);
+  search.setKeypointSurface (scene.surface);
+  return search;
+}
+
+/** The search adds nothing: it succeeds, counts none and leaves the model as it was. */
+void
+expectNothingFound (const mid::SizeInstanceSearch& search,
+                    const mid::ObjectModel& model)
+{
+  mid::ObjectModels models = {model};
+  std::size_t found = std::numeric_limits<std::size_t>::max();
+  ASSERT_TRUE (search.search (models, found));
+  EXPECT_EQ (found, 0u);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models[0].instances.size(), model.instances.size());
+  EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch, FindsACopyShowingAnotherFaceUpByItsSize)
+{
+  const Boxes scene (twoFlatOneOnItsSide());
+  mid::ObjectModels models = {scene.modelOf ({0, 1})};
+  const mid::ObjectModel before = models[0];
+  std::size_t found = 0;
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  EXPECT_EQ (found, 1u);
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 3u);
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_TRUE (models[0].instances[i].pose.isApprox (before.instances[i].pose));
+
+  // The new instance observes keypoints of box 2 alone, most of them (not those in the
+  // creases along its edges, where no surface grows), each a new landmark.
+  const mid::ModelInstance& copy = models[0].instances[2];
+  EXPECT_EQ (scene.boxOf (copy.keypoints), 2);
+  EXPECT_GE (2 * copy.keypoints.size(), scene.on ({2}).size());
+  EXPECT_EQ (models[0].landmarks.size(),
+             before.landmarks.size() + copy.keypoints.size());
+  EXPECT_EQ (models[0].descriptors.size(),
+             before.descriptors.size() + copy.keypoints.size());
+  EXPECT_LT (copy.rms_error, 1e-5f);
+  // Its pose brings the model (box 0's frame) onto box 2, up to the box's symmetries: box 0's
+  // axes x (0.12), y (0.09), z (0.04) are box 2's x, z and -y.
+  Eigen::Matrix3d flat_in_side;
+  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  Eigen::Isometry3d truth = scene.scene.boxes[2].pose;
+  truth.linear() = truth.linear() * flat_in_side;
+  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
+  EXPECT_LT (
+      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+      0.004f);
+
+  // Box 2 now holds an instance: a second search adds none.
+  expectNothingFound (searchIn (scene), models[0]);
+}
+
+TEST (SizeInstanceSearch, NeedsCopiesThatAgreeOnTheSizeAndKeypointsToReport)
+{
+  const Boxes scene (twoFlatOneOnItsSide());
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  mid::SizeInstanceSearch three_agreeing = searchIn (scene);
+  three_agreeing.setMinAgreeing (3);
+  expectNothingFound (three_agreeing, model);
+  mid::SizeInstanceSearch many_keypoints = searchIn (scene);
+  many_keypoints.setMinKeypoints (static_cast<int> (scene.on ({2}).size()) + 1);
+  expectNothingFound (many_keypoints, model);
+}
+
+TEST (SizeInstanceSearch, LeavesBoxesOfAnotherSizeAlone)
+{
+  const Boxes scene (fourBoxes ({0.1, 0.09, 0.04}));
+  expectNothingFound (searchIn (scene), scene.modelOf ({0, 1}));
+}
+
+TEST (SizeInstanceSearch, LeavesTouchingCopiesMeasuredAsOneAlone)
+{
+  // Boxes 2 and 3 have the model's size but touch along their long edges: their tops join
+  // into one surface of twice the width.
+  const Boxes scene (twoApartTwoTouching());
+  expectNothingFound (searchIn (scene), scene.modelOf ({0, 1}));
+}
+
+TEST (SizeInstanceSearch, RefusesBadInputAndLeavesTheModels)
+{
+  const Boxes scene (twoFlatOneOnItsSide());
+  const mid::ObjectModels models = {scene.modelOf ({0, 1})};
+  const auto refuses = [&models] (const mid::SizeInstanceSearch& search) {
+    mid::ObjectModels copy = models;
+    std::size_t found = 7;
+    EXPECT_FALSE (search.search (copy, found));
+    EXPECT_EQ (found, 0u);
+    ASSERT_EQ (copy.size(), 1u);
+    EXPECT_EQ (copy[0].instances.size(), models[0].instances.size());
+    EXPECT_EQ (copy[0].landmarks.size(), models[0].landmarks.size());
+  };
+  mid::SizeInstanceSearch no_keypoints = searchIn (scene);
+  no_keypoints.setInputKeypoints (nullptr);
+  refuses (no_keypoints);
+  mid::SizeInstanceSearch short_descriptors = searchIn (scene);
+  auto fewer = pcl::make_shared<mid::SIFTDescriptorCloud> (*scene.descriptors);
+  fewer->resize (fewer->size() - 1);
+  short_descriptors.setInputDescriptors (fewer);
+  refuses (short_descriptors);
+  mid::SizeInstanceSearch no_pixels = searchIn (scene);
+  mid::KeypointSurface surface = scene.surface;
+  surface.keypoint_pixels.pop_back();
+  no_pixels.setKeypointSurface (surface);
+  refuses (no_pixels);
+  mid::SizeInstanceSearch negative = searchIn (scene);
+  negative.setSizeTolerance (-0.001f, 0.03f);
+  refuses (negative);
+  mid::SizeInstanceSearch no_step = searchIn (scene);
+  no_step.setMaxStep (0.0f);
+  refuses (no_step);
+  mid::SizeInstanceSearch nobody = searchIn (scene);
+  nobody.setMinKeypoints (0);
+  refuses (nobody);
+
+  mid::ObjectModels outside = models;
+  outside[0].instances[0].keypoints.push_back (
+      static_cast<pcl::index_t> (scene.keypoints->size()));
+  outside[0].instances[0].landmarks.push_back (0);
+  std::size_t found = 7;
+  EXPECT_FALSE (searchIn (scene).search (outside, found));
+  EXPECT_EQ (found, 0u);
+}
