@@ -323,8 +323,8 @@ struct DiscoveryParameters
     */
   ///@{
   bool size_search = true;
-  int size_search_min_keypoints = 3;
-  int size_search_min_agreeing = 2;
+  int size_search_min_keypoints = 2;
+  int size_search_min_agreeing = 1;
   ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).

@@ -158,7 +158,7 @@ public:
   ///@}
 
   /** \brief Measured copies of a model that must agree on its size before copies are looked
-    * for by it (default 2, >= 1).
+    * for by it (default 1, >= 1).
     */
   ///@{
   void
@@ -173,7 +173,7 @@ public:
   }
   ///@}
 
-  /** \brief Free keypoints an object must hold to become an instance (default 3, >= 1): what
+  /** \brief Free keypoints an object must hold to become an instance (default 2, >= 1): what
     * the instance reports as its keypoints, and a guard against plain boxes.
     */
   ///@{
@@ -213,8 +213,8 @@ private:
   float plane_tolerance_ = 0.01f;
   float size_tolerance_ = 0.006f;
   float relative_size_tolerance_ = 0.03f;
-  int min_agreeing_ = 2;
-  int min_keypoints_ = 3;
+  int min_agreeing_ = 1;
+  int min_keypoints_ = 2;
 };
 
 } // namespace mid
