@@ -178,6 +178,12 @@ printHelp (const char* program)
   line ("-size_agree N",
         "size search: copies of a model that must agree on its size",
         d.size_search_min_agreeing);
+  line ("-size_surrounded S",
+        "size discovery: largest share of occupied pixels around an object",
+        static_cast<double> (d.size_discovery_max_surrounded));
+  line ("-size_min_edge D",
+        "size discovery: shortest edge of an object, metres",
+        static_cast<double> (d.size_discovery_min_edge));
   line ("-min_correlation C",
         "smallest grey-level correlation of a verified cluster, each way",
         static_cast<double> (d.min_photometric_correlation));
@@ -239,6 +245,10 @@ printHelp (const char* program)
       "of its\n");
   print_info ("                      landmarks (the paper's behaviour)\n");
   print_info (
+      "  -no_size_discovery  do not make models of objects that repeat by their size "
+      "alone\n");
+  print_info ("                      (the paper's behaviour)\n");
+  print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");
   print_info (
@@ -286,6 +296,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_size_search", 0},
                                       {"-size_kp", 1},
                                       {"-size_agree", 1},
+                                      {"-no_size_discovery", 0},
+                                      {"-size_surrounded", 1},
+                                      {"-size_min_edge", 1},
                                       {"-split_corr", 1},
                                       {"-guided_seed_dist", 1},
                                       {"-guided_desc_dist", 1},
@@ -376,6 +389,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
+  p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =
       parseNumber (argc, argv, "-max_keypoints", p.max_keypoints) &&
       parseNumber (argc, argv, "-contrast", p.contrast_threshold) &&
@@ -425,6 +439,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&
       parseNumber (argc, argv, "-size_agree", p.size_search_min_agreeing) &&
+      parseNumber (argc, argv, "-size_surrounded", p.size_discovery_max_surrounded) &&
+      parseNumber (argc, argv, "-size_min_edge", p.size_discovery_min_edge) &&
       parseNumber (argc, argv, "-seed", p.seed) &&
       parseNumber (argc, argv, "-gc_size", p.gc_size) &&
       parseNumber (argc, argv, "-gc_threshold", p.gc_threshold) &&

@@ -246,6 +246,16 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "size_search_min_agreeing",
              p.size_search_min_agreeing,
              ">= 1");
+  c.require (p.size_discovery_max_surrounded >= 0.0f &&
+                 p.size_discovery_max_surrounded <= 1.0f,
+             "size_discovery_max_surrounded",
+             static_cast<double> (p.size_discovery_max_surrounded),
+             "in [0, 1]");
+  c.require (p.size_discovery_min_edge >= 0.0f &&
+                 std::isfinite (p.size_discovery_min_edge),
+             "size_discovery_min_edge",
+             static_cast<double> (p.size_discovery_min_edge),
+             "finite and >= 0");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

@@ -813,7 +813,8 @@ mergeBySize (const DiscoveryParameters& p,
 }
 
 /** Find the copies of a model that show none of its landmarks by their size
-  * (DiscoveryParameters::size_search), when the organized frame is known; times the
+  * (DiscoveryParameters::size_search), and the objects that repeat by size alone
+  * (DiscoveryParameters::size_discovery), when the organized frame is known; times the
   * "size_search" stage either way.
   */
 bool
@@ -834,6 +835,9 @@ searchBySize (const DiscoveryParameters& p,
     search.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
     search.setMinAgreeing (p.size_search_min_agreeing);
     search.setMinKeypoints (p.size_search_min_keypoints);
+    search.setDiscoverModels (p.size_discovery);
+    search.setMaxSurroundedShare (p.size_discovery_max_surrounded);
+    search.setMinModelEdge (p.size_discovery_min_edge);
     std::size_t found = 0;
     if (!search.search (result.models, found))
       return false;

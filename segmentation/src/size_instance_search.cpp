@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -130,6 +131,97 @@ addInstance (const KeypointCloud& keypoints,
   updateModelDiameter (model);
 }
 
+/** Pixels around an object's surface (within this many of it) that tell what it stands on. */
+constexpr int kRingPixels = 4;
+
+/** Share of the pixels around `pixels` (within kRingPixels of them, not among them) that hold
+  * a point off the support plane (farther than `tolerance` from it): where the object leans on,
+  * lies under or stands beside something else. Missing depth (the shadow beside an object)
+  * counts as free. 1 if no pixel lies around.
+  */
+float
+surroundedShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                 const Eigen::Vector4f& plane,
+                 const pcl::Indices& pixels,
+                 float tolerance)
+{
+  const int width = static_cast<int> (organized.width);
+  const int height = static_cast<int> (organized.height);
+  std::vector<std::uint8_t> visited (organized.size(), 0);
+  for (const auto p : pixels)
+    visited[static_cast<std::size_t> (p)] = 1;
+  std::size_t around = 0, occupied = 0;
+  for (const auto p : pixels) {
+    const int row = p / width, column = p % width;
+    for (int r = std::max (0, row - kRingPixels);
+         r <= std::min (height - 1, row + kRingPixels);
+         ++r)
+      for (int c = std::max (0, column - kRingPixels);
+           c <= std::min (width - 1, column + kRingPixels);
+           ++c) {
+        const auto q = static_cast<std::size_t> (r) * static_cast<std::size_t> (width) +
+                       static_cast<std::size_t> (c);
+        if (visited[q] != 0)
+          continue;
+        visited[q] = 1;
+        ++around;
+        const auto& point = organized[q];
+        if (std::isfinite (point.z) &&
+            std::abs (plane.head<3>().dot (point.getVector3fMap()) + plane[3]) >
+                tolerance)
+          ++occupied;
+      }
+  }
+  return around == 0 ? 1.0f
+                     : static_cast<float> (occupied) / static_cast<float> (around);
+}
+
+/** An object on the table that no instance observes: its surface, its keypoints and its
+  * box.
+  */
+struct FreeObject
+{
+  pcl::Indices pixels;
+  pcl::Indices keypoints;
+  InstanceExtent extent;
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+using FreeObjects = std::vector<FreeObject, Eigen::aligned_allocator<FreeObject>>;
+
+/** Group the objects whose sizes agree with the first of the group (most keypoints first);
+  * groups of one are dropped.
+  */
+std::vector<std::vector<std::size_t>>
+groupsOfOneSize (const FreeObjects& objects,
+                 const std::vector<std::size_t>& candidates,
+                 const SizeAgreement& agree)
+{
+  std::vector<std::size_t> order = candidates;
+  std::stable_sort (
+      order.begin(), order.end(), [&objects] (std::size_t a, std::size_t b) {
+        return objects[a].keypoints.size() > objects[b].keypoints.size();
+      });
+  std::vector<bool> grouped (objects.size(), false);
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (grouped[order[i]])
+      continue;
+    std::vector<std::size_t> group = {order[i]};
+    for (std::size_t j = i + 1; j < order.size(); ++j)
+      if (!grouped[order[j]] &&
+          agree (objects[order[i]].extent.size, objects[order[j]].extent.size))
+        group.push_back (order[j]);
+    if (group.size() < 2)
+      continue;
+    for (const std::size_t g : group)
+      grouped[g] = true;
+    groups.push_back (group);
+  }
+  return groups;
+}
+
 } // namespace
 
 std::string
@@ -149,6 +241,10 @@ SizeInstanceSearch::inputProblem (const ObjectModels& models) const
   if (min_agreeing_ < 1 || min_keypoints_ < 1)
     return "at least one instance must agree on a size, and one keypoint make an "
            "instance";
+  if (!(max_surrounded_share_ >= 0.0f && max_surrounded_share_ <= 1.0f) ||
+      !(min_model_edge_ >= 0.0f) || !std::isfinite (min_model_edge_))
+    return "the surrounded share must be in [0, 1] and the shortest edge finite and >= "
+           "0";
   for (const auto& model : models)
     for (const auto& instance : model.instances)
       for (const auto k : instance.keypoints)
@@ -166,7 +262,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     PCL_ERROR ("[mid::SizeInstanceSearch::search] %s.\n", problem.c_str());
     return false;
   }
-  if (models.empty())
+  if (models.empty() && !discover_models_)
     return true;
   const auto& organized = *surface_.organized;
   Eigen::Vector4f plane;
@@ -185,7 +281,8 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
                           min_agreeing_,
                           sizes))
     return false;
-  if (std::none_of (sizes.begin(), sizes.end(), [] (const ModelSize& size) {
+  if (!discover_models_ &&
+      std::none_of (sizes.begin(), sizes.end(), [] (const ModelSize& size) {
         return size.valid;
       }))
     return true;
@@ -220,36 +317,54 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   for (std::size_t s = instance_seeds; s < seeds.size(); ++s)
     if (sets.find (s) >= instance_seeds && !surfaces[s].empty())
       objects[sets.find (s)].push_back (s);
-  const std::vector<std::size_t> old_sizes = [&models] {
-    std::vector<std::size_t> counts;
-    for (const auto& model : models)
-      counts.push_back (model.instances.size());
-    return counts;
-  }();
+  FreeObjects free_objects;
   for (const auto& object : objects) {
     if (object.size() < static_cast<std::size_t> (min_keypoints_))
       continue;
-    pcl::Indices pixels, keypoints;
+    FreeObject free_object;
     for (const std::size_t s : object) {
-      pixels.insert (pixels.end(), surfaces[s].begin(), surfaces[s].end());
-      keypoints.push_back (free[s - instance_seeds]);
+      free_object.pixels.insert (
+          free_object.pixels.end(), surfaces[s].begin(), surfaces[s].end());
+      free_object.keypoints.push_back (free[s - instance_seeds]);
     }
-    InstanceExtent extent;
-    if (!fitInstanceBox (organized, plane, pixels, extent))
-      continue;
-    const int m = modelOfSize (extent.size, sizes, agree);
-    if (m < 0)
-      continue;
-    auto& model = models[static_cast<std::size_t> (m)];
-    addInstance (*keypoints_,
-                 *descriptors_,
-                 keypoints,
-                 extent.pose *
-                     sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
-                 model);
+    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent))
+      free_objects.push_back (free_object);
   }
-  for (std::size_t m = 0; m < models.size(); ++m)
-    found += models[m].instances.size() - old_sizes[m];
+
+  // A copy of a model's size joins it; an object standing alone, of no model's size, may
+  // found a model with others of its size.
+  std::vector<std::size_t> alone;
+  for (std::size_t o = 0; o < free_objects.size(); ++o) {
+    const FreeObject& object = free_objects[o];
+    const int m = modelOfSize (object.extent.size, sizes, agree);
+    if (m >= 0) {
+      addInstance (*keypoints_,
+                   *descriptors_,
+                   object.keypoints,
+                   object.extent.pose *
+                       sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
+                   models[static_cast<std::size_t> (m)]);
+      ++found;
+    }
+    else if (discover_models_ && object.extent.size.minCoeff() >= min_model_edge_ &&
+             surroundedShare (
+                 organized, plane, object.pixels, 2.0f * plane_tolerance_) <=
+                 max_surrounded_share_)
+      alone.push_back (o);
+  }
+  // The model frame is the first copy's box frame (centred on the landmarks after).
+  for (const auto& group : groupsOfOneSize (free_objects, alone, agree)) {
+    ObjectModel model;
+    for (const std::size_t o : group)
+      addInstance (*keypoints_,
+                   *descriptors_,
+                   free_objects[o].keypoints,
+                   free_objects[o].extent.pose,
+                   model);
+    centerModelFrame (model);
+    models.push_back (model);
+    found += group.size();
+  }
   return true;
 }
 

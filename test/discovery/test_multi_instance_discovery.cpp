@@ -238,6 +238,48 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
 }
 
+TEST (MultiInstanceDiscovery, FindsCopiesThatShareNoSurfaceByTheirSize)
+{
+  // Two boxes of one size on a table, each showing a print the other does not (like two
+  // cartons with different faces up): nothing in their appearance matches, so the paper's
+  // method finds nothing; their size makes one object of them.
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  const auto scene =
+      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.15, -0.08, z, 10.0)},
+                               {kJuice, size, boxPose (0.14, 0.09, z, -55.0)}},
+                              0.95);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters by_appearance;
+  by_appearance.size_discovery = false;
+  discovery.setParameters (by_appearance);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  EXPECT_TRUE (result.models.empty());
+
+  discovery.setParameters (mid::DiscoveryParameters());
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto& model = result.models[0];
+  const auto boxes = boxesOf (scene, result, model);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+  expectCentredModelFrame (result, model);
+  // Their relative pose is the boxes' own up to the box's symmetries, which keep its centre:
+  // it moves the first box's centre onto the second's.
+  ASSERT_EQ (boxes.size(), 2u);
+  const Eigen::Matrix4f relative =
+      model.instances[1].pose * model.instances[0].pose.inverse();
+  const Eigen::Vector3f from =
+      scene.boxes[static_cast<std::size_t> (boxes[0])].pose.translation().cast<float>();
+  const Eigen::Vector3f to =
+      scene.boxes[static_cast<std::size_t> (boxes[1])].pose.translation().cast<float>();
+  EXPECT_LT (
+      (relative.topLeftCorner<3, 3>() * from + relative.topRightCorner<3, 1>() - to)
+          .norm(),
+      0.005f);
+}
+
 TEST (MultiInstanceDiscovery, FindsCopiesFromAPatchWhereNoClusterForms)
 {
   // No cluster can reach its minimum size: only a patch of keypoints taken as a model, and

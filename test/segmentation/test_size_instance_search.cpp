@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <set>
 
 namespace {
 
@@ -157,6 +159,12 @@ TEST (SizeInstanceSearch, RefusesBadInputAndLeavesTheModels)
   mid::SizeInstanceSearch nobody = searchIn (scene);
   nobody.setMinKeypoints (0);
   refuses (nobody);
+  mid::SizeInstanceSearch crowded = searchIn (scene);
+  crowded.setMaxSurroundedShare (1.5f);
+  refuses (crowded);
+  mid::SizeInstanceSearch no_edge = searchIn (scene);
+  no_edge.setMinModelEdge (-0.01f);
+  refuses (no_edge);
 
   mid::ObjectModels outside = models;
   outside[0].instances[0].keypoints.push_back (
@@ -165,4 +173,100 @@ TEST (SizeInstanceSearch, RefusesBadInputAndLeavesTheModels)
   std::size_t found = 7;
   EXPECT_FALSE (searchIn (scene).search (outside, found));
   EXPECT_EQ (found, 0u);
+}
+
+namespace {
+
+/** Boxes 0 and 1 share a size but not a print; box 2 has the first print and another size. */
+std::vector<mid::test::BoxSpec>
+twoOfOneSizeOneOfAnother ()
+{
+  return {restingBox (kApplePrint, -0.16, -0.1, 10.0),
+          restingBox (kSoyPrint, 0.16, -0.12, -35.0),
+          restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})};
+}
+
+/** Search with no model to start from, making models by size. */
+mid::ObjectModels
+discoverBySize (const mid::SizeInstanceSearch& search, std::size_t& found)
+{
+  mid::ObjectModels models;
+  EXPECT_TRUE (search.search (models, found));
+  return models;
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
+{
+  const Boxes scene (twoOfOneSizeOneOfAnother());
+  mid::SizeInstanceSearch search = searchIn (scene);
+  std::size_t found = 0;
+  EXPECT_TRUE (discoverBySize (search, found).empty()); // not asked for
+  EXPECT_EQ (found, 0u);
+
+  search.setDiscoverModels (true);
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, 2u);
+  const mid::ObjectModel& model = models[0];
+  ASSERT_EQ (model.instances.size(), 2u);
+  const int first = scene.boxOf (model.instances[0].keypoints);
+  const int second = scene.boxOf (model.instances[1].keypoints);
+  EXPECT_EQ (std::min (first, second), 0);
+  EXPECT_EQ (std::max (first, second), 1);
+  ASSERT_GE (std::min (first, second), 0);
+  // The relative pose of the two instances is the boxes' own, up to the box's symmetries: it
+  // moves the first box's centre onto the second's.
+  const Eigen::Isometry3d& a = scene.scene.boxes[static_cast<std::size_t> (first)].pose;
+  const Eigen::Isometry3d& b =
+      scene.scene.boxes[static_cast<std::size_t> (second)].pose;
+  const Eigen::Matrix4f relative =
+      model.instances[1].pose * model.instances[0].pose.inverse();
+  EXPECT_LT (rotationErrorModuloBox (relative * a.matrix().cast<float>(), b), 3.0);
+  const Eigen::Vector3f moved =
+      relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
+      relative.topRightCorner<3, 1>();
+  EXPECT_LT ((moved - b.translation().cast<float>()).norm(), 0.005f);
+  // Every landmark is a keypoint of its copy, placed exactly by its instance's pose.
+  for (const auto& instance : model.instances)
+    EXPECT_LT (instance.rms_error, 1e-5f);
+
+  // Objects whose shortest edge (0.04 here) is below the smallest a model may have.
+  search.setMinModelEdge (0.05f);
+  EXPECT_TRUE (discoverBySize (search, found).empty());
+}
+
+TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAlone)
+{
+  // The two copies of one size lie on a low tray, which surrounds them: their surfaces could
+  // be fragments of a pile or a bin.
+  constexpr double kTray = 0.03;
+  const auto on_tray = [] (const char* print, double x, double y, double roll) {
+    return mid::test::BoxSpec{
+        print,
+        mid::test::kPrintedBoxSize,
+        mid::test::boxPose (x,
+                            y,
+                            mid::test::kTableDepth - kTray -
+                                0.5 * mid::test::kPrintedBoxSize.z(),
+                            roll)};
+  };
+  const Boxes scene ({restingBox (kApplePrint, 0.0, 0.0, 0.0, {0.5, 0.3, kTray}),
+                      on_tray (kApplePrint, -0.12, -0.04, 10.0),
+                      on_tray (kSoyPrint, 0.12, 0.03, -20.0)});
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  std::size_t found = 0;
+  EXPECT_TRUE (discoverBySize (search, found).empty());
+  EXPECT_EQ (found, 0u);
+  // The same copies with the surroundings ignored: one model of the two.
+  search.setMaxSurroundedShare (1.0f);
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 2u);
+  std::set<int> boxes;
+  for (const auto& instance : models[0].instances)
+    boxes.insert (scene.boxOf (instance.keypoints));
+  EXPECT_EQ (boxes, (std::set<int>{1, 2}));
 }

@@ -326,6 +326,19 @@ struct DiscoveryParameters
   int size_search_min_keypoints = 2;
   int size_search_min_agreeing = 1;
   ///@}
+  /** \brief With the size search, also make models of the objects that repeat with no two
+    * copies showing the same surface, by size alone (not in the paper;
+    * SizeInstanceSearch::setDiscoverModels()): two or more objects of no model's size, each
+    * standing alone on the support plane (at most size_discovery_max_surrounded, in [0, 1],
+    * of the pixels around it hold something else), with a shortest edge of at least
+    * size_discovery_min_edge (metres, >= 0) and sizes that agree, become a model. Two
+    * different products of one size standing apart become one model.
+    */
+  ///@{
+  bool size_discovery = true;
+  float size_discovery_max_surrounded = 0.2f;
+  float size_discovery_min_edge = 0.03f;
+  ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
     * 12.5 % (min_inlier_ratio in [0, 1)).
     */

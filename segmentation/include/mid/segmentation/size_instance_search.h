@@ -8,7 +8,8 @@
 
 namespace mid {
 
-/** \brief Finds the copies of a model that show none of its landmarks, by the size of the box
+/** \brief Finds the copies of a model that show none of its landmarks, and when asked the
+  * objects that repeat without any two copies showing the same surface, by the size of the box
   * they occupy on the support plane (not in the paper).
   *
   * A copy lying with a face up that no other copy shows has nothing to match: no descriptor,
@@ -29,11 +30,22 @@ namespace mid {
   *    turn of a box, a quarter turn of a square one; which face the copy shows is what is
   *    not known); its free keypoints become landmarks of the model, with their descriptors.
   *
+  * 4. with setDiscoverModels(), groups the objects of no model's size that stand alone on the
+  *    plane (at most `max_surrounded_share` of the pixels around their surface hold something
+  *    else than the plane: not in a pile, a bin or a row of touching objects) and whose
+  *    shortest edge is at least `min_model_edge`, by size: two or more of one size become a
+  *    new model, in the box frame of the copy with the most keypoints, each copy an instance
+  *    posed by its box (up to the box's symmetries), all their keypoints landmarks.
+  *
   * An object touching another is measured with it and agrees with no model's size; an object
   * occluded in part is measured too small: both are left alone. A product of another type
   * that has the same size within the tolerance is taken for a copy: the step trades those for
   * the copies that show an unmatched face, far more common on a table of several copies of
-  * one product. Deterministic (the plane's hypotheses are drawn with a fixed seed).
+  * one product. The models of step 4 rest on the size alone: two different products of one
+  * size standing apart become one model, which is why it is asked for separately, and why it
+  * keeps to objects that stand alone (in a pile or a bin the surfaces are fragments, and small
+  * fragments agree in size by chance) and to edges that the tolerance measures well.
+  * Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
 class SizeInstanceSearch
 {
@@ -189,11 +201,62 @@ public:
   }
   ///@}
 
-  /** \brief Add the copies found by their size to the models.
+  /** \brief Also make models of the objects that stand alone on the plane and share a size
+    * that no model has (step 4 above; default false).
+    */
+  ///@{
+  void
+  setDiscoverModels (bool discover)
+  {
+    discover_models_ = discover;
+  }
+  bool
+  getDiscoverModels () const
+  {
+    return discover_models_;
+  }
+  ///@}
+
+  /** \brief Largest share of the pixels around an object's surface (within 4 pixels) that may
+    * hold something else than the support plane for it to stand alone (default 0.2, in
+    * [0, 1]; missing depth counts as free). Isolated boxes on a table measure 0 to 0.02, the
+    * fragments of a pile 0.3 to 1.
+    */
+  ///@{
+  void
+  setMaxSurroundedShare (float share)
+  {
+    max_surrounded_share_ = share;
+  }
+  float
+  getMaxSurroundedShare () const
+  {
+    return max_surrounded_share_;
+  }
+  ///@}
+
+  /** \brief Shortest edge of an object that may found a model by its size (metres, default
+    * 0.03, >= 0): five times the default size tolerance, below which sizes agree by chance.
+    */
+  ///@{
+  void
+  setMinModelEdge (float edge)
+  {
+    min_model_edge_ = edge;
+  }
+  float
+  getMinModelEdge () const
+  {
+    return min_model_edge_;
+  }
+  ///@}
+
+  /** \brief Add the copies found by their size to the models, and the models found by size.
     * \param[in,out] models the frame's models; each keeps its instances and landmarks, in
-    * order, and gains the instances found (after its own) and their keypoints as landmarks.
-    * Without a support plane, or without a model of a measured size, nothing changes.
-    * \param[out] found how many instances were added
+    * order, and gains the instances found (after its own) and their keypoints as landmarks;
+    * the new models (setDiscoverModels()) come after them. Without a support plane, or
+    * without a model of a measured size and without setDiscoverModels(), nothing changes.
+    * \param[out] found how many instances were added, to old models and in new ones
     * \return false (with a PCL_ERROR, models unchanged, found 0) on missing or inconsistent
     * input, a parameter out of range, or an observation outside the keypoints
     */
@@ -215,6 +278,9 @@ private:
   float relative_size_tolerance_ = 0.03f;
   int min_agreeing_ = 1;
   int min_keypoints_ = 2;
+  bool discover_models_ = false;
+  float max_surrounded_share_ = 0.2f;
+  float min_model_edge_ = 0.03f;
 };
 
 } // namespace mid
