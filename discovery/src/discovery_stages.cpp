@@ -786,6 +786,24 @@ refineOnSurface (const DiscoveryParameters& p,
   return true;
 }
 
+/** Give a step that measures boxes on the table the frame's keypoints, their pixels in the
+  * organized frame (which `frame` must hold) and the size tolerances.
+  */
+void
+setUpBoxMeasurement (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     const DiscoveryResult& result,
+                     ModelSizeMeasurement& measurement)
+{
+  KeypointSurface keypoint_surface;
+  keypoint_surface.organized = frame.organized;
+  for (const auto& k : result.image_keypoints)
+    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+  measurement.setInputKeypoints (result.keypoints);
+  measurement.setKeypointSurface (keypoint_surface);
+  measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
+}
+
 /** Merge the models of one size (DiscoveryParameters::merge_by_size), when the organized
   * frame is known; times the "size_merge" stage either way.
   */
@@ -796,14 +814,8 @@ mergeBySize (const DiscoveryParameters& p,
 {
   pcl::StopWatch watch;
   if (p.merge_by_size && frame.organized) {
-    KeypointSurface keypoint_surface;
-    keypoint_surface.organized = frame.organized;
-    for (const auto& k : result.image_keypoints)
-      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
     ModelSizeMerger merger;
-    merger.setInputKeypoints (result.keypoints);
-    merger.setKeypointSurface (keypoint_surface);
-    merger.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
+    setUpBoxMeasurement (p, frame, result, merger);
     merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
     if (!merger.merge (result.models))
       return false;
@@ -824,15 +836,9 @@ searchBySize (const DiscoveryParameters& p,
 {
   pcl::StopWatch watch;
   if (p.size_search && frame.organized) {
-    KeypointSurface keypoint_surface;
-    keypoint_surface.organized = frame.organized;
-    for (const auto& k : result.image_keypoints)
-      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
     SizeInstanceSearch search;
-    search.setInputKeypoints (result.keypoints);
+    setUpBoxMeasurement (p, frame, result, search);
     search.setInputDescriptors (result.descriptors);
-    search.setKeypointSurface (keypoint_surface);
-    search.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
     search.setMinAgreeing (p.size_search_min_agreeing);
     search.setMinKeypoints (p.size_search_min_keypoints);
     search.setDiscoverModels (p.size_discovery);

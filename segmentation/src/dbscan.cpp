@@ -1,3 +1,5 @@
+#include "disjoint_sets.h"
+
 #include <mid/segmentation/dbscan.h>
 
 #include <algorithm>
@@ -5,42 +7,6 @@
 #include <numeric>
 
 namespace mid {
-
-namespace {
-
-/** Union-find with path halving; the root of a set is its smallest member. */
-class DisjointSets
-{
-public:
-  explicit DisjointSets (std::size_t n) : parent_ (n)
-  {
-    std::iota (parent_.begin(), parent_.end(), std::size_t{0});
-  }
-
-  std::size_t
-  find (std::size_t i)
-  {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];
-      i = parent_[i];
-    }
-    return i;
-  }
-
-  void
-  unite (std::size_t a, std::size_t b)
-  {
-    a = find (a);
-    b = find (b);
-    if (a != b)
-      parent_[std::max (a, b)] = std::min (a, b);
-  }
-
-private:
-  std::vector<std::size_t> parent_;
-};
-
-} // namespace
 
 std::size_t
 DBSCAN::cluster (std::size_t n,
@@ -60,7 +26,7 @@ DBSCAN::cluster (std::size_t n,
     is_core[i] = neighbors.size() + 1 >= min_samples_;
   }
 
-  DisjointSets sets (n);
+  detail::DisjointSets sets (n);
   std::vector<std::size_t> nearest_core (n, n);
   std::vector<double> nearest_distance (n, std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < n; ++i) {

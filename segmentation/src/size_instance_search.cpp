@@ -1,3 +1,5 @@
+#include "disjoint_sets.h"
+
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size.h>
 #include <mid/segmentation/size_instance_search.h>
@@ -15,36 +17,6 @@ namespace mid {
 
 namespace {
 
-/** Disjoint sets of seeds (union-find with path halving). */
-class SeedSets
-{
-public:
-  explicit SeedSets (std::size_t size) : parent_ (size)
-  {
-    std::iota (parent_.begin(), parent_.end(), std::size_t{0});
-  }
-
-  std::size_t
-  find (std::size_t s)
-  {
-    while (parent_[s] != s)
-      s = parent_[s] = parent_[parent_[s]];
-    return s;
-  }
-
-  void
-  join (std::size_t a, std::size_t b)
-  {
-    a = find (a);
-    b = find (b);
-    if (a != b)
-      parent_[std::max (a, b)] = std::min (a, b);
-  }
-
-private:
-  std::vector<std::size_t> parent_;
-};
-
 /** Join the seeds whose surfaces touch: two 4-neighbouring pixels of two surfaces whose points
   * are closer than max_step.
   */
@@ -52,7 +24,7 @@ void
 joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
                       const std::vector<pcl::Indices>& surfaces,
                       float max_step,
-                      SeedSets& sets)
+                      detail::DisjointSets& sets)
 {
   constexpr int kNone = -1;
   std::vector<int> label (organized.size(), kNone);
@@ -70,8 +42,8 @@ joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
         continue;
       if ((organized[next].getVector3fMap() - organized[pixel].getVector3fMap())
               .norm() < max_step)
-        sets.join (static_cast<std::size_t> (label[pixel]),
-                   static_cast<std::size_t> (label[next]));
+        sets.unite (static_cast<std::size_t> (label[pixel]),
+                    static_cast<std::size_t> (label[next]));
     }
   }
 }
@@ -227,29 +199,16 @@ groupsOfOneSize (const FreeObjects& objects,
 std::string
 SizeInstanceSearch::inputProblem (const ObjectModels& models) const
 {
-  if (!keypoints_ || !descriptors_)
-    return "no input keypoints or descriptors";
-  if (descriptors_->size() != keypoints_->size())
+  if (std::string problem = measurementProblem (models); !problem.empty())
+    return problem;
+  if (!descriptors_ || descriptors_->size() != keypoints_->size())
     return "the descriptors are not one per keypoint";
-  if (!isValidKeypointSurface (surface_, keypoints_->size()))
-    return "the keypoint surface is not an organized frame holding every keypoint's "
-           "pixel";
-  if (!(max_step_ > 0.0f) || !(max_radius_ > 0.0f) || !(plane_tolerance_ > 0.0f))
-    return "the step, radius and plane tolerance must be > 0";
-  if (!(size_tolerance_ >= 0.0f) || !(relative_size_tolerance_ >= 0.0f))
-    return "the size tolerances must be >= 0";
-  if (min_agreeing_ < 1 || min_keypoints_ < 1)
-    return "at least one instance must agree on a size, and one keypoint make an "
-           "instance";
+  if (min_keypoints_ < 1)
+    return "one keypoint at least must make an instance";
   if (!(max_surrounded_share_ >= 0.0f && max_surrounded_share_ <= 1.0f) ||
       !(min_model_edge_ >= 0.0f) || !std::isfinite (min_model_edge_))
     return "the surrounded share must be in [0, 1] and the shortest edge finite and >= "
            "0";
-  for (const auto& model : models)
-    for (const auto& instance : model.instances)
-      for (const auto k : instance.keypoints)
-        if (k < 0 || static_cast<std::size_t> (k) >= keypoints_->size())
-          return "an instance observes a keypoint outside the input keypoints";
   return "";
 }
 
@@ -266,20 +225,11 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     return true;
   const auto& organized = *surface_.organized;
   Eigen::Vector4f plane;
-  if (!fitSupportPlane (organized, plane_tolerance_, kMinSupportPlaneShare, plane))
+  if (!fitPlane (plane))
     return true;
-  const SizeAgreement agree (size_tolerance_, relative_size_tolerance_);
+  const SizeAgreement agree = agreement();
   ModelSizes sizes;
-  if (!measureModelSizes (organized,
-                          plane,
-                          surface_.keypoint_pixels,
-                          models,
-                          max_step_,
-                          max_radius_,
-                          plane_tolerance_,
-                          agree,
-                          min_agreeing_,
-                          sizes))
+  if (!measureSizes (models, plane, sizes))
     return false;
   if (!discover_models_ &&
       std::none_of (sizes.begin(), sizes.end(), [] (const ModelSize& size) {
@@ -309,7 +259,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   if (!growInstanceSurfaces (
           organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, surfaces))
     return false;
-  SeedSets sets (seeds.size());
+  detail::DisjointSets sets (seeds.size());
   joinTouchingSurfaces (organized, surfaces, max_step_, sets);
 
   // Objects of free keypoints alone: an instance's seed is the smallest of its set.

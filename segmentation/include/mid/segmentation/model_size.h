@@ -2,6 +2,7 @@
 
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/object_model.h>
+#include <mid/segmentation/surface_gap.h>
 
 #include <Eigen/Core>
 #include <Eigen/StdVector>
@@ -9,6 +10,7 @@
 #include <pcl/point_types.h>
 #include <pcl/types.h>
 
+#include <string>
 #include <vector>
 
 namespace mid {
@@ -84,5 +86,168 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    const SizeAgreement& agree,
                    int min_agreeing,
                    ModelSizes& sizes);
+
+/** \brief What the steps that measure the boxes of models on the support plane share
+  * (ModelSizeMerger, SizeInstanceSearch): the frame's keypoints and keypoint surface, how the
+  * surfaces grow, and when two sizes agree; set/get pairs and the shared checks.
+  */
+class ModelSizeMeasurement
+{
+public:
+  /** \brief The frame's keypoints that the models' observations index (camera frame, metres).
+    * Required.
+    */
+  ///@{
+  void
+  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
+  {
+    keypoints_ = keypoints;
+  }
+  const KeypointCloud::ConstPtr&
+  getInputKeypoints () const
+  {
+    return keypoints_;
+  }
+  ///@}
+
+  /** \brief The organized frame and each keypoint's pixel in it. Required: the organized
+    * frame and the keypoint pixels; grey levels and projection are not read.
+    */
+  ///@{
+  void
+  setKeypointSurface (const KeypointSurface& surface)
+  {
+    surface_ = surface;
+  }
+  const KeypointSurface&
+  getKeypointSurface () const
+  {
+    return surface_;
+  }
+  ///@}
+
+  /** \brief Largest distance between two neighbouring pixels' points of one surface (metres,
+    * default 0.008, > 0).
+    */
+  ///@{
+  void
+  setMaxStep (float step)
+  {
+    max_step_ = step;
+  }
+  float
+  getMaxStep () const
+  {
+    return max_step_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a surface point from the centroid of the keypoints it grew
+    * from (metres, default 0.3, > 0): bounds the objects that can be measured.
+    */
+  ///@{
+  void
+  setMaxRadius (float radius)
+  {
+    max_radius_ = radius;
+  }
+  float
+  getMaxRadius () const
+  {
+    return max_radius_;
+  }
+  ///@}
+
+  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
+    * > 0).
+    */
+  ///@{
+  void
+  setPlaneTolerance (float tolerance)
+  {
+    plane_tolerance_ = tolerance;
+  }
+  float
+  getPlaneTolerance () const
+  {
+    return plane_tolerance_;
+  }
+  ///@}
+
+  /** \brief Two sizes agree when each edge differs by at most the larger of `absolute`
+    * (metres, default 0.006, >= 0) and `relative` times the longer of the two edges (default
+    * 0.03, >= 0).
+    */
+  ///@{
+  void
+  setSizeTolerance (float absolute, float relative)
+  {
+    size_tolerance_ = absolute;
+    relative_size_tolerance_ = relative;
+  }
+  float
+  getSizeTolerance () const
+  {
+    return size_tolerance_;
+  }
+  float
+  getRelativeSizeTolerance () const
+  {
+    return relative_size_tolerance_;
+  }
+  ///@}
+
+  /** \brief Measured instances that must agree on a model's size before it has one
+    * (default 1, >= 1).
+    */
+  ///@{
+  void
+  setMinAgreeing (int count)
+  {
+    min_agreeing_ = count;
+  }
+  int
+  getMinAgreeing () const
+  {
+    return min_agreeing_;
+  }
+  ///@}
+
+protected:
+  /** \brief What is wrong with the keypoints, the keypoint surface, the parameters above or
+    * `models` (an observation outside the keypoints); empty if nothing.
+    */
+  std::string
+  measurementProblem (const ObjectModels& models) const;
+
+  /** \brief Fit the frame's support plane (fitSupportPlane(), with the plane tolerance and
+    * kMinSupportPlaneShare).
+    * \return false if no plane holds that share of the frame
+    */
+  bool
+  fitPlane (Eigen::Vector4f& plane) const;
+
+  /** \brief measureModelSizes() on the support plane with the parameters above. */
+  bool
+  measureSizes (const ObjectModels& models,
+                const Eigen::Vector4f& plane,
+                ModelSizes& sizes) const;
+
+  /** \brief When two sizes agree, by the size tolerances. */
+  SizeAgreement
+  agreement () const
+  {
+    return {size_tolerance_, relative_size_tolerance_};
+  }
+
+  KeypointCloud::ConstPtr keypoints_;     ///< see setInputKeypoints()
+  KeypointSurface surface_;               ///< see setKeypointSurface()
+  float max_step_ = 0.008f;               ///< see setMaxStep()
+  float max_radius_ = 0.3f;               ///< see setMaxRadius()
+  float plane_tolerance_ = 0.01f;         ///< see setPlaneTolerance()
+  float size_tolerance_ = 0.006f;         ///< see setSizeTolerance()
+  float relative_size_tolerance_ = 0.03f; ///< see setSizeTolerance()
+  int min_agreeing_ = 1;                  ///< see setMinAgreeing()
+};
 
 } // namespace mid

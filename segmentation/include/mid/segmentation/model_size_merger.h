@@ -1,10 +1,7 @@
 #pragma once
 
-#include <mid/features/keypoint_types.h>
 #include <mid/registration/object_model.h>
-#include <mid/segmentation/surface_gap.h>
-
-#include <string>
+#include <mid/segmentation/model_size.h>
 
 namespace mid {
 
@@ -36,126 +33,9 @@ namespace mid {
   * the seam: such copies are measured right only when their keypoints cover them.
   * Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
-class ModelSizeMerger
+class ModelSizeMerger : public ModelSizeMeasurement
 {
 public:
-  /** \brief The frame's keypoints that the models' observations index (camera frame, metres).
-    * Required.
-    */
-  ///@{
-  void
-  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
-  {
-    keypoints_ = keypoints;
-  }
-  const KeypointCloud::ConstPtr&
-  getInputKeypoints () const
-  {
-    return keypoints_;
-  }
-  ///@}
-
-  /** \brief The organized frame and each keypoint's pixel in it. Required: the organized
-    * frame and the keypoint pixels; grey levels and projection are not read.
-    */
-  ///@{
-  void
-  setKeypointSurface (const KeypointSurface& surface)
-  {
-    surface_ = surface;
-  }
-  const KeypointSurface&
-  getKeypointSurface () const
-  {
-    return surface_;
-  }
-  ///@}
-
-  /** \brief Largest distance between two neighbouring pixels' points of one surface (metres,
-    * default 0.008, > 0).
-    */
-  ///@{
-  void
-  setMaxStep (float step)
-  {
-    max_step_ = step;
-  }
-  float
-  getMaxStep () const
-  {
-    return max_step_;
-  }
-  ///@}
-
-  /** \brief Largest distance of a surface point from its instance's keypoints' centroid
-    * (metres, default 0.3, > 0): bounds the objects that can be measured.
-    */
-  ///@{
-  void
-  setMaxRadius (float radius)
-  {
-    max_radius_ = radius;
-  }
-  float
-  getMaxRadius () const
-  {
-    return max_radius_;
-  }
-  ///@}
-
-  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
-    * > 0).
-    */
-  ///@{
-  void
-  setPlaneTolerance (float tolerance)
-  {
-    plane_tolerance_ = tolerance;
-  }
-  float
-  getPlaneTolerance () const
-  {
-    return plane_tolerance_;
-  }
-  ///@}
-
-  /** \brief Two sizes agree when each edge differs by at most the larger of `absolute`
-    * (metres, default 0.006, >= 0) and `relative` times the longer of the two edges (default
-    * 0.03, >= 0).
-    */
-  ///@{
-  void
-  setSizeTolerance (float absolute, float relative)
-  {
-    size_tolerance_ = absolute;
-    relative_size_tolerance_ = relative;
-  }
-  float
-  getSizeTolerance () const
-  {
-    return size_tolerance_;
-  }
-  float
-  getRelativeSizeTolerance () const
-  {
-    return relative_size_tolerance_;
-  }
-  ///@}
-
-  /** \brief Measured instances that must agree on a model's size (default 1, >= 1). */
-  ///@{
-  void
-  setMinAgreeing (int count)
-  {
-    min_agreeing_ = count;
-  }
-  int
-  getMinAgreeing () const
-  {
-    return min_agreeing_;
-  }
-  ///@}
-
   /** \brief Instances of two merged models whose poses coincide within these (radians,
     * metres) are one instance (mergeModel(); defaults 10 deg and 0.01).
     */
@@ -188,18 +68,6 @@ public:
   merge (ObjectModels& models) const;
 
 private:
-  /** \brief What is wrong with the input, parameters or `models`; empty if nothing. */
-  std::string
-  inputProblem (const ObjectModels& models) const;
-
-  KeypointCloud::ConstPtr keypoints_;
-  KeypointSurface surface_;
-  float max_step_ = 0.008f;
-  float max_radius_ = 0.3f;
-  float plane_tolerance_ = 0.01f;
-  float size_tolerance_ = 0.006f;
-  float relative_size_tolerance_ = 0.03f;
-  int min_agreeing_ = 1;
   float duplicate_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
   float duplicate_distance_ = 0.01f;
 };

@@ -2,7 +2,7 @@
 
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/object_model.h>
-#include <mid/segmentation/surface_gap.h>
+#include <mid/segmentation/model_size.h>
 
 #include <string>
 
@@ -47,25 +47,9 @@ namespace mid {
   * fragments agree in size by chance) and to edges that the tolerance measures well.
   * Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
-class SizeInstanceSearch
+class SizeInstanceSearch : public ModelSizeMeasurement
 {
 public:
-  /** \brief The frame's keypoints that the models' observations index (camera frame, metres).
-    * Required.
-    */
-  ///@{
-  void
-  setInputKeypoints (const KeypointCloud::ConstPtr& keypoints)
-  {
-    keypoints_ = keypoints;
-  }
-  const KeypointCloud::ConstPtr&
-  getInputKeypoints () const
-  {
-    return keypoints_;
-  }
-  ///@}
-
   /** \brief The keypoints' descriptors (one per keypoint), which the new landmarks keep.
     * Required.
     */
@@ -79,109 +63,6 @@ public:
   getInputDescriptors () const
   {
     return descriptors_;
-  }
-  ///@}
-
-  /** \brief The organized frame and each keypoint's pixel in it. Required: the organized
-    * frame and the keypoint pixels; grey levels and projection are not read.
-    */
-  ///@{
-  void
-  setKeypointSurface (const KeypointSurface& surface)
-  {
-    surface_ = surface;
-  }
-  const KeypointSurface&
-  getKeypointSurface () const
-  {
-    return surface_;
-  }
-  ///@}
-
-  /** \brief Largest distance between two neighbouring pixels' points of one surface (metres,
-    * default 0.008, > 0).
-    */
-  ///@{
-  void
-  setMaxStep (float step)
-  {
-    max_step_ = step;
-  }
-  float
-  getMaxStep () const
-  {
-    return max_step_;
-  }
-  ///@}
-
-  /** \brief Largest distance of a surface point from its seeds' centroid (metres, default
-    * 0.3, > 0): bounds the objects that can be measured.
-    */
-  ///@{
-  void
-  setMaxRadius (float radius)
-  {
-    max_radius_ = radius;
-  }
-  float
-  getMaxRadius () const
-  {
-    return max_radius_;
-  }
-  ///@}
-
-  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
-    * > 0).
-    */
-  ///@{
-  void
-  setPlaneTolerance (float tolerance)
-  {
-    plane_tolerance_ = tolerance;
-  }
-  float
-  getPlaneTolerance () const
-  {
-    return plane_tolerance_;
-  }
-  ///@}
-
-  /** \brief Two sizes agree when each edge differs by at most the larger of `absolute`
-    * (metres, default 0.006, >= 0) and `relative` times the longer of the two edges (default
-    * 0.03, >= 0).
-    */
-  ///@{
-  void
-  setSizeTolerance (float absolute, float relative)
-  {
-    size_tolerance_ = absolute;
-    relative_size_tolerance_ = relative;
-  }
-  float
-  getSizeTolerance () const
-  {
-    return size_tolerance_;
-  }
-  float
-  getRelativeSizeTolerance () const
-  {
-    return relative_size_tolerance_;
-  }
-  ///@}
-
-  /** \brief Measured copies of a model that must agree on its size before copies are looked
-    * for by it (default 1, >= 1).
-    */
-  ///@{
-  void
-  setMinAgreeing (int count)
-  {
-    min_agreeing_ = count;
-  }
-  int
-  getMinAgreeing () const
-  {
-    return min_agreeing_;
   }
   ///@}
 
@@ -268,15 +149,7 @@ private:
   std::string
   inputProblem (const ObjectModels& models) const;
 
-  KeypointCloud::ConstPtr keypoints_;
   SIFTDescriptorCloud::ConstPtr descriptors_;
-  KeypointSurface surface_;
-  float max_step_ = 0.008f;
-  float max_radius_ = 0.3f;
-  float plane_tolerance_ = 0.01f;
-  float size_tolerance_ = 0.006f;
-  float relative_size_tolerance_ = 0.03f;
-  int min_agreeing_ = 1;
   int min_keypoints_ = 2;
   bool discover_models_ = false;
   float max_surrounded_share_ = 0.2f;
