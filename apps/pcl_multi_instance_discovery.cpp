@@ -243,11 +243,15 @@ printHelp (const char* program)
   print_info (
       "  -no_size_search     do not look for copies of a model's size that show none "
       "of its\n");
-  print_info ("                      landmarks (the paper's behaviour)\n");
+  print_info (
+      "                      landmarks, nor for objects of one size (the paper's "
+      "behaviour)\n");
   print_info (
       "  -no_size_discovery  do not make models of objects that repeat by their size "
       "alone\n");
-  print_info ("                      (the paper's behaviour)\n");
+  print_info (
+      "                      (different products of one size standing apart would be "
+      "one)\n");
   print_info (
       "  -no_verification    keep every cluster, whatever the look of the surface "
       "its pose\n");

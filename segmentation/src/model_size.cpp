@@ -17,6 +17,19 @@ SizeAgreement::operator() (const Eigen::Vector3f& a, const Eigen::Vector3f& b) c
   return true;
 }
 
+std::vector<pcl::Indices>
+instanceSeedPixels (const ObjectModels& models, const pcl::Indices& keypoint_pixels)
+{
+  std::vector<pcl::Indices> seeds;
+  for (const auto& model : models)
+    for (const auto& instance : model.instances) {
+      seeds.emplace_back();
+      for (const auto k : instance.keypoints)
+        seeds.back().push_back (keypoint_pixels[static_cast<std::size_t> (k)]);
+    }
+  return seeds;
+}
+
 bool
 measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    const Eigen::Vector4f& plane,
@@ -30,13 +43,7 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    ModelSizes& sizes)
 {
   sizes.clear();
-  std::vector<pcl::Indices> seeds;
-  for (const auto& model : models)
-    for (const auto& instance : model.instances) {
-      seeds.emplace_back();
-      for (const auto k : instance.keypoints)
-        seeds.back().push_back (keypoint_pixels[static_cast<std::size_t> (k)]);
-    }
+  const std::vector<pcl::Indices> seeds = instanceSeedPixels (models, keypoint_pixels);
   std::vector<pcl::Indices> surfaces;
   if (!growInstanceSurfaces (
           organized, plane, seeds, max_step, max_radius, plane_tolerance, surfaces))
@@ -69,7 +76,7 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
             models[m].instances[measured[a]].pose.inverse() * extents[a].pose;
       }
     }
-    sizes[m].valid = best_count >= min_agreeing;
+    sizes[m].valid = best_count > 0 && best_count >= min_agreeing;
   }
   return true;
 }

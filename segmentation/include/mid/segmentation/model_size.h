@@ -59,6 +59,14 @@ struct ModelSize
 /** \brief One ModelSize per model. */
 using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
 
+/** \brief The pixels of each instance's keypoints, instance after instance and model after
+  * model: the seeds from which their surfaces grow (growInstanceSurfaces()).
+  * \param[in] models the models; their observations must index keypoint_pixels (not checked)
+  * \param[in] keypoint_pixels each keypoint's pixel (row * width + column)
+  */
+std::vector<pcl::Indices>
+instanceSeedPixels (const ObjectModels& models, const pcl::Indices& keypoint_pixels);
+
 /** \brief Measure the box every model's copies occupy on the support plane.
   *
   * The surfaces of all instances of all models grow at once from their keypoints' pixels
@@ -71,7 +79,8 @@ using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
   * \param[in] models the models; their observations must index keypoint_pixels (not checked)
   * \param[in] max_step, max_radius, plane_tolerance the growth (growInstanceSurfaces())
   * \param[in] agree when two sizes are one
-  * \param[in] min_agreeing measured instances that must agree on a size (ModelSize::valid)
+  * \param[in] min_agreeing measured instances that must agree on a size (ModelSize::valid;
+  * a model with no measured instance has no size, whatever this is)
   * \param[out] sizes one per model, in order
   * \return false (with a PCL_ERROR, sizes empty) if the growth refuses the frame or a seed
   */

@@ -99,9 +99,9 @@ public:
   ///@}
 
   /** \brief Largest share of the pixels around an object's surface (within 4 pixels) that may
-    * hold something else than the support plane for it to stand alone (default 0.2, in
-    * [0, 1]; missing depth counts as free). Isolated boxes on a table measure 0 to 0.02, the
-    * fragments of a pile 0.3 to 1.
+    * hold a point off the support plane (farther than twice the plane tolerance from it) for
+    * the object to stand alone (default 0.2, in [0, 1]; missing depth counts as free).
+    * Isolated cartons on a table measure 0 to 0.01, the fragments of a pile 0.29 to 1.
     */
   ///@{
   void
@@ -134,8 +134,10 @@ public:
 
   /** \brief Add the copies found by their size to the models, and the models found by size.
     * \param[in,out] models the frame's models; each keeps its instances and landmarks, in
-    * order, and gains the instances found (after its own) and their keypoints as landmarks;
-    * the new models (setDiscoverModels()) come after them. Without a support plane, or
+    * order, and gains the instances found (after its own) and their keypoints as landmarks,
+    * in its own frame (not centred again: centerModelFrame()); the new models
+    * (setDiscoverModels()), centred on their landmarks, come after them. An object whose box
+    * holds a keypoint of an instance is no copy. Without a support plane, or
     * without a model of a measured size and without setDiscoverModels(), nothing changes.
     * \param[out] found how many instances were added, to old models and in new ones
     * \return false (with a PCL_ERROR, models unchanged, found 0) on missing or inconsistent
