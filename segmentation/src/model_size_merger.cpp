@@ -1,13 +1,10 @@
 #include <mid/registration/model_merging.h>
-#include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size.h>
 #include <mid/segmentation/model_size_merger.h>
 
 #include <pcl/console/print.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
