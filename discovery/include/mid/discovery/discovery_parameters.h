@@ -104,8 +104,12 @@ struct DiscoveryParameters
   float verification_radius = 0.015f;
   /** \brief How far the frame's surface may lie from a moved point (metres, > 0). */
   float verification_depth_tolerance = 0.01f;
-  /** \brief The smallest grey-level correlation of a kept cluster, each way (in [-1, 1]). */
-  float min_photometric_correlation = 0.4f;
+  /** \brief The smallest grey-level correlation of a kept cluster, each way (in [-1, 1];
+    * stricter than PhotometricVerification's own 0.4: a cluster that moves one print onto a
+    * look-alike part of another is better dropped, as the later stages then find the copies
+    * at their right pose; doc/benchmark.md, session 30).
+    */
+  float min_photometric_correlation = 0.6f;
   /** \brief The largest difference of the mean chromaticities (|dr| + |dg| of the red and
     * green shares) of the two sides of the surface a pose compares, for the verified clusters, the guided search and
     * the patches (> 0; 2 or more: colours never reject; not in the paper: grey levels alone
