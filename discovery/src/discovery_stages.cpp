@@ -499,28 +499,6 @@ searchGuidedInstances (const DiscoveryParameters& p,
   return true;
 }
 
-/** A model of the keypoints of `patch` with one instance where they lie, its frame at their
-  * centroid with the camera's axes.
-  */
-ObjectModel
-patchModel (const DiscoveryResult& result, const pcl::Indices& patch)
-{
-  ObjectModel model;
-  ModelInstance own;
-  for (const pcl::index_t k : patch) {
-    const auto landmark = static_cast<int> (model.landmarks.size());
-    own.keypoints.push_back (k);
-    own.landmarks.push_back (landmark);
-    model.descriptor_landmarks.push_back (landmark);
-    model.landmarks.push_back ((*result.keypoints)[static_cast<std::size_t> (k)]);
-    model.descriptors.push_back ((*result.descriptors)[static_cast<std::size_t> (k)]);
-  }
-  model.instances.push_back (std::move (own));
-  centerModelFrame (model);
-  updateModelDiameter (model);
-  return model;
-}
-
 /** True if `model` matches one of `models` on at least `min_inliers` RANSAC inliers. */
 bool
 matchesAnyModel (const DiscoveryParameters& p,
@@ -592,7 +570,8 @@ discoverFromPatches (const DiscoveryParameters& p,
         if (!taken[k] &&
             (keypoints[k].getVector3fMap() - centre).norm() >= p.patch_radius)
           candidates.push_back (static_cast<pcl::index_t> (k));
-      ObjectModel model = patchModel (result, patch);
+      ObjectModel model =
+          modelOfKeypoints (*result.keypoints, *result.descriptors, patch);
       ModelInstances copies = model.instances;
       for (const auto& other : result.models)
         copies.insert (copies.end(), other.instances.begin(), other.instances.end());

@@ -118,4 +118,46 @@ centerModelFrame (ObjectModel& model)
         instance.pose.topLeftCorner<3, 3>() * centroid;
 }
 
+void
+addInstanceOfKeypoints (const KeypointCloud& keypoints,
+                        const SIFTDescriptorCloud& descriptors,
+                        const pcl::Indices& observed,
+                        const Eigen::Matrix4f& pose,
+                        ObjectModel& model)
+{
+  const Eigen::Matrix4f camera_to_model = pose.inverse();
+  ModelInstance instance;
+  instance.pose = pose;
+  for (const auto k : observed) {
+    const auto& keypoint = keypoints[static_cast<std::size_t> (k)];
+    pcl::PointNormal landmark = keypoint;
+    landmark.getVector3fMap() =
+        camera_to_model.topLeftCorner<3, 3>() * keypoint.getVector3fMap() +
+        camera_to_model.topRightCorner<3, 1>();
+    landmark.getNormalVector3fMap() =
+        camera_to_model.topLeftCorner<3, 3>() * keypoint.getNormalVector3fMap();
+    const auto index = static_cast<int> (model.landmarks.size());
+    model.landmarks.push_back (landmark);
+    model.descriptors.push_back (descriptors[static_cast<std::size_t> (k)]);
+    model.descriptor_landmarks.push_back (index);
+    instance.keypoints.push_back (k);
+    instance.landmarks.push_back (index);
+  }
+  updateInstanceError (model, keypoints, instance);
+  model.instances.push_back (instance);
+  updateModelDiameter (model);
+}
+
+ObjectModel
+modelOfKeypoints (const KeypointCloud& keypoints,
+                  const SIFTDescriptorCloud& descriptors,
+                  const pcl::Indices& observed)
+{
+  ObjectModel model;
+  addInstanceOfKeypoints (
+      keypoints, descriptors, observed, Eigen::Matrix4f::Identity(), model);
+  centerModelFrame (model);
+  return model;
+}
+
 } // namespace mid

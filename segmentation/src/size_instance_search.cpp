@@ -101,39 +101,6 @@ modelOfSize (const Eigen::Vector3f& size,
   return best;
 }
 
-/** A new instance of `model` at `pose` (model -> camera) observing `keypoints`, each added as
-  * a landmark with its descriptor.
-  */
-void
-addInstance (const KeypointCloud& keypoints,
-             const SIFTDescriptorCloud& descriptors,
-             const pcl::Indices& observed,
-             const Eigen::Matrix4f& pose,
-             ObjectModel& model)
-{
-  const Eigen::Matrix4f camera_to_model = pose.inverse();
-  ModelInstance instance;
-  instance.pose = pose;
-  for (const auto k : observed) {
-    const auto& keypoint = keypoints[static_cast<std::size_t> (k)];
-    pcl::PointNormal landmark = keypoint;
-    landmark.getVector3fMap() =
-        camera_to_model.topLeftCorner<3, 3>() * keypoint.getVector3fMap() +
-        camera_to_model.topRightCorner<3, 1>();
-    landmark.getNormalVector3fMap() =
-        camera_to_model.topLeftCorner<3, 3>() * keypoint.getNormalVector3fMap();
-    const auto index = static_cast<int> (model.landmarks.size());
-    model.landmarks.push_back (landmark);
-    model.descriptors.push_back (descriptors[static_cast<std::size_t> (k)]);
-    model.descriptor_landmarks.push_back (index);
-    instance.keypoints.push_back (k);
-    instance.landmarks.push_back (index);
-  }
-  updateInstanceError (model, keypoints, instance);
-  model.instances.push_back (instance);
-  updateModelDiameter (model);
-}
-
 /** How far inside an object's box a found copy's keypoint must lie to rule the object out
   * (metres): touching copies share a face, and their keypoints lie on it.
   */
@@ -322,12 +289,13 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     const FreeObject& object = free_objects[o];
     const int m = modelOfSize (object.extent.size, sizes, agree);
     if (m >= 0) {
-      addInstance (*keypoints_,
-                   *descriptors_,
-                   object.keypoints,
-                   object.extent.pose *
-                       sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
-                   models[static_cast<std::size_t> (m)]);
+      addInstanceOfKeypoints (
+          *keypoints_,
+          *descriptors_,
+          object.keypoints,
+          object.extent.pose *
+              sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
+          models[static_cast<std::size_t> (m)]);
       ++found;
     }
     else if (discover_models_ && object.extent.size.minCoeff() >= min_model_edge_ &&
@@ -340,11 +308,11 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   for (const auto& group : groupsOfOneSize (free_objects, alone, agree)) {
     ObjectModel model;
     for (const std::size_t o : group)
-      addInstance (*keypoints_,
-                   *descriptors_,
-                   free_objects[o].keypoints,
-                   free_objects[o].extent.pose,
-                   model);
+      addInstanceOfKeypoints (*keypoints_,
+                              *descriptors_,
+                              free_objects[o].keypoints,
+                              free_objects[o].extent.pose,
+                              model);
     centerModelFrame (model);
     models.push_back (model);
     found += group.size();

@@ -541,3 +541,113 @@ TEST (ModelFrame, CentringKeepsWhereEveryInstancePlacesTheLandmarks)
   mid::centerModelFrame (empty);
   EXPECT_TRUE (empty.instances.front().pose.isIdentity());
 }
+
+TEST (ModelFrame, ModelOfKeypointsIsCentredOnThemAndPlacesEachOnItsKeypoint)
+{
+  // Keypoints 0.8 m in front of the camera, each with its own normal and descriptor; the
+  // model of three of them (the pipeline's models from patches).
+  mid::KeypointCloud keypoints;
+  mid::SIFTDescriptorCloud descriptors;
+  const std::vector<Eigen::Vector3f> points = {{0.10f, -0.05f, 0.80f},
+                                               {0.14f, -0.02f, 0.82f},
+                                               {0.07f, 0.01f, 0.85f},
+                                               {0.30f, 0.20f, 0.90f}};
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    pcl::PointNormal keypoint;
+    keypoint.getVector3fMap() = points[k];
+    keypoint.getNormalVector3fMap() =
+        Eigen::Vector3f (0.1f * static_cast<float> (k), 0.6f, -0.8f).normalized();
+    keypoints.push_back (keypoint);
+    mid::SIFTDescriptor descriptor;
+    std::fill (std::begin (descriptor.histogram),
+               std::end (descriptor.histogram),
+               static_cast<float> (k + 1));
+    descriptors.push_back (descriptor);
+  }
+  const pcl::Indices observed = {2, 0, 1};
+  const mid::ObjectModel model =
+      mid::modelOfKeypoints (keypoints, descriptors, observed);
+
+  ASSERT_EQ (model.landmarks.size(), 3u);
+  ASSERT_EQ (model.instances.size(), 1u);
+  const mid::ModelInstance& instance = model.instances.front();
+  EXPECT_EQ (instance.keypoints, observed);
+  const Eigen::Vector3f centroid = (points[0] + points[1] + points[2]) / 3.0f;
+  // The frame sits at the keypoints' centroid with the camera's axes.
+  const Eigen::Matrix3f rotation = instance.pose.topLeftCorner<3, 3>();
+  EXPECT_TRUE (rotation.isIdentity (1e-6f));
+  EXPECT_LT ((instance.pose.topRightCorner<3, 1>() - centroid).norm(), 1e-6f);
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (std::size_t i = 0; i < observed.size(); ++i) {
+    const auto k = static_cast<std::size_t> (observed[i]);
+    const auto l = static_cast<std::size_t> (instance.landmarks[i]);
+    const Eigen::Vector3f landmark = model.landmarks[l].getVector3fMap();
+    sum += landmark;
+    EXPECT_LT ((landmark + centroid - points[k]).norm(), 1e-6f);
+    EXPECT_TRUE (model.landmarks[l].getNormalVector3fMap().isApprox (
+        keypoints[k].getNormalVector3fMap()));
+    const auto d =
+        static_cast<std::size_t> (std::find (model.descriptor_landmarks.begin(),
+                                             model.descriptor_landmarks.end(),
+                                             static_cast<int> (l)) -
+                                  model.descriptor_landmarks.begin());
+    ASSERT_LT (d, model.descriptors.size());
+    EXPECT_EQ (model.descriptors[d].histogram[0], static_cast<float> (k + 1));
+  }
+  EXPECT_LT (sum.norm(), 1e-6f);
+  EXPECT_LT (instance.rms_error, 1e-6f);
+  float diameter = 0.0f; // the farthest two of the three keypoints
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t b = a + 1; b < 3; ++b)
+      diameter = std::max (diameter, (points[a] - points[b]).norm());
+  EXPECT_NEAR (model.diameter, diameter, 1e-6f);
+
+  const pcl::Indices none;
+  EXPECT_TRUE (mid::modelOfKeypoints (keypoints, descriptors, none).landmarks.empty());
+}
+
+TEST (ModelFrame, AnInstanceOfKeypointsCarriesThemIntoTheModelFrame)
+{
+  // A model with one landmark; a copy at a known pose observes two more keypoints.
+  mid::ObjectModel model;
+  pcl::PointNormal first;
+  first.getVector3fMap() = Eigen::Vector3f (0.01f, 0.0f, 0.0f);
+  first.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+  model.landmarks.push_back (first);
+  model.descriptors.resize (1);
+  model.descriptor_landmarks.push_back (0);
+  const Eigen::Isometry3f motion =
+      mid::test::rigidMotion (Eigen::Vector3f (-0.2f, 0.1f, 0.9f), 1.1f, {0, 1, 1});
+  const std::vector<Eigen::Vector3f> in_model = {{0.03f, 0.02f, -0.01f},
+                                                 {-0.04f, 0.05f, 0.02f}};
+  mid::KeypointCloud keypoints;
+  mid::SIFTDescriptorCloud descriptors (2, 1);
+  for (const auto& point : in_model) {
+    pcl::PointNormal keypoint;
+    keypoint.getVector3fMap() = motion * point;
+    keypoint.getNormalVector3fMap() = motion.linear() * Eigen::Vector3f::UnitX();
+    keypoints.push_back (keypoint);
+  }
+  mid::addInstanceOfKeypoints (keypoints, descriptors, {0, 1}, motion.matrix(), model);
+
+  ASSERT_EQ (model.landmarks.size(), 3u);
+  ASSERT_EQ (model.instances.size(), 1u);
+  EXPECT_EQ (model.descriptors.size(), 3u);
+  EXPECT_EQ (model.descriptor_landmarks, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ (model.instances.front().landmarks, (std::vector<int>{1, 2}));
+  for (std::size_t i = 0; i < in_model.size(); ++i) {
+    EXPECT_LT ((model.landmarks[i + 1].getVector3fMap() - in_model[i]).norm(), 1e-5f);
+    EXPECT_LT (
+        (model.landmarks[i + 1].getNormalVector3fMap() - Eigen::Vector3f::UnitX())
+            .norm(),
+        1e-5f);
+  }
+  EXPECT_LT (model.instances.front().rms_error, 1e-5f);
+  const std::vector<Eigen::Vector3f> all = {
+      Eigen::Vector3f (0.01f, 0.0f, 0.0f), in_model[0], in_model[1]};
+  float diameter = 0.0f;
+  for (std::size_t a = 0; a < all.size(); ++a)
+    for (std::size_t b = a + 1; b < all.size(); ++b)
+      diameter = std::max (diameter, (all[a] - all[b]).norm());
+  EXPECT_NEAR (model.diameter, diameter, 1e-5f);
+}

@@ -126,4 +126,36 @@ updateModelDiameter (ObjectModel& model);
 void
 centerModelFrame (ObjectModel& model);
 
+/** \brief Add an instance at `pose` that observes some keypoints, each of which becomes a new
+  * landmark of the model: its position and normal carried into the model frame, its descriptor
+  * taken along. For copies that show the model nothing it already holds (found by their size,
+  * say), whose keypoints extend it. The instance's error and the model's diameter are updated;
+  * the frame is not centred again (centerModelFrame()).
+  * \param[in] keypoints the frame's keypoints (camera frame, metres)
+  * \param[in] descriptors one per keypoint
+  * \param[in] observed the keypoints the new instance observes (valid indices, not checked)
+  * \param[in] pose the new instance's pose, model frame -> camera frame
+  * \param[in,out] model the model that gets the landmarks and the instance
+  */
+void
+addInstanceOfKeypoints (const KeypointCloud& keypoints,
+                        const SIFTDescriptorCloud& descriptors,
+                        const pcl::Indices& observed,
+                        const Eigen::Matrix4f& pose,
+                        ObjectModel& model);
+
+/** \brief A model of some keypoints: one instance that observes them, each a landmark, the frame
+  * at their centroid with the camera's axes (centred like the builder's models, so that the
+  * checks that compare two poses at the model origin measure at the object). A seed whose
+  * copies are looked for next (the pipeline's models from patches).
+  * \param[in] keypoints the frame's keypoints (camera frame, metres)
+  * \param[in] descriptors one per keypoint
+  * \param[in] observed the keypoints of the model (valid indices, not checked)
+  * \return the model; without landmarks when `observed` is empty
+  */
+ObjectModel
+modelOfKeypoints (const KeypointCloud& keypoints,
+                  const SIFTDescriptorCloud& descriptors,
+                  const pcl::Indices& observed);
+
 } // namespace mid
