@@ -172,6 +172,15 @@ printHelp (const char* program)
   line ("-size_rel_tol R",
         "size merge: ... or R times the edge, if larger",
         static_cast<double> (d.relative_size_tolerance));
+  line ("-repeat_rot A",
+        "repeated prints: largest turn between two instances on one object, degrees",
+        static_cast<double> (d.repeated_print_max_rotation) * 180.0 / M_PI);
+  line ("-repeat_shift R",
+        "repeated prints: largest shift, times the object box's shortest edge",
+        static_cast<double> (d.repeated_print_max_shift));
+  line ("-repeat_inside S",
+        "repeated prints: share of an instance's keypoints in the other's object box",
+        static_cast<double> (d.repeated_print_min_inside));
   line ("-size_kp N",
         "size search: free keypoints an object needs to become an instance",
         d.size_search_min_keypoints);
@@ -241,6 +250,13 @@ printHelp (const char* program)
       "on the\n");
   print_info ("                      table (the paper's behaviour)\n");
   print_info (
+      "  -keep_repeated_prints  keep the instances of a model that lie on one object "
+      "with\n");
+  print_info (
+      "                      another of its instances, shifted along a print that "
+      "repeats\n");
+  print_info ("                      on it (the paper's behaviour)\n");
+  print_info (
       "  -no_size_search     do not look for copies of a model's size that show none "
       "of its\n");
   print_info (
@@ -297,6 +313,10 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_size_merge", 0},
                                       {"-size_tol", 1},
                                       {"-size_rel_tol", 1},
+                                      {"-keep_repeated_prints", 0},
+                                      {"-repeat_rot", 1},
+                                      {"-repeat_shift", 1},
+                                      {"-repeat_inside", 1},
                                       {"-no_size_search", 0},
                                       {"-size_kp", 1},
                                       {"-size_agree", 1},
@@ -392,6 +412,8 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
+  p.remove_repeated_prints =
+      !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =
@@ -441,6 +463,9 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-surface_iterations", p.surface_iterations) &&
       parseNumber (argc, argv, "-size_tol", p.size_tolerance) &&
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
+      parseDegrees (argc, argv, "-repeat_rot", p.repeated_print_max_rotation) &&
+      parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
+      parseNumber (argc, argv, "-repeat_inside", p.repeated_print_min_inside) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&
       parseNumber (argc, argv, "-size_agree", p.size_search_min_agreeing) &&
       parseNumber (argc, argv, "-size_surrounded", p.size_discovery_max_surrounded) &&

@@ -238,6 +238,20 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "relative_size_tolerance",
              static_cast<double> (p.relative_size_tolerance),
              "finite and >= 0");
+  c.require (p.repeated_print_max_rotation >= 0.0f &&
+                 p.repeated_print_max_rotation <= static_cast<float> (M_PI),
+             "repeated_print_max_rotation",
+             static_cast<double> (p.repeated_print_max_rotation),
+             "in [0, pi]");
+  c.require (p.repeated_print_max_shift >= 0.0f &&
+                 std::isfinite (p.repeated_print_max_shift),
+             "repeated_print_max_shift",
+             static_cast<double> (p.repeated_print_max_shift),
+             "finite and >= 0");
+  c.require (p.repeated_print_min_inside >= 0.0f && p.repeated_print_min_inside <= 1.0f,
+             "repeated_print_min_inside",
+             static_cast<double> (p.repeated_print_min_inside),
+             "in [0, 1]");
   c.require (p.size_search_min_keypoints >= 1,
              "size_search_min_keypoints",
              p.size_search_min_keypoints,

@@ -16,6 +16,7 @@
 #include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/photometric_verification.h>
+#include <mid/segmentation/repeated_print_filter.h>
 #include <mid/segmentation/size_instance_search.h>
 #include <mid/segmentation/surface_gap.h>
 #include <mid/segmentation/surface_pose_refinement.h>
@@ -765,14 +766,13 @@ refineOnSurface (const DiscoveryParameters& p,
   return true;
 }
 
-/** Give a step that measures boxes on the table the frame's keypoints, their pixels in the
-  * organized frame (which `frame` must hold) and the size tolerances.
+/** Give a step that measures boxes on the table the frame's keypoints and their pixels in the
+  * organized frame (which `frame` must hold).
   */
 void
-setUpBoxMeasurement (const DiscoveryParameters& p,
-                     const KeypointSurface& frame,
-                     const DiscoveryResult& result,
-                     ModelSizeMeasurement& measurement)
+setUpPlaneMeasurement (const KeypointSurface& frame,
+                       const DiscoveryResult& result,
+                       SupportPlaneMeasurement& measurement)
 {
   KeypointSurface keypoint_surface;
   keypoint_surface.organized = frame.organized;
@@ -780,6 +780,16 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
     keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
   measurement.setInputKeypoints (result.keypoints);
   measurement.setKeypointSurface (keypoint_surface);
+}
+
+/** setUpPlaneMeasurement(), and the size tolerances of a step that compares box sizes. */
+void
+setUpBoxMeasurement (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     const DiscoveryResult& result,
+                     ModelSizeMeasurement& measurement)
+{
+  setUpPlaneMeasurement (frame, result, measurement);
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
 }
 
@@ -800,6 +810,30 @@ mergeBySize (const DiscoveryParameters& p,
       return false;
   }
   result.timing_ms.emplace_back ("size_merge", watch.getTime());
+  return true;
+}
+
+/** Remove the instances that repeat a print on one object with another of their model
+  * (DiscoveryParameters::remove_repeated_prints), when the organized frame is known; times the
+  * "repeated_prints" stage either way.
+  */
+bool
+removeRepeatedPrints (const DiscoveryParameters& p,
+                      const KeypointSurface& frame,
+                      DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_repeated_prints && frame.organized) {
+    RepeatedPrintFilter filter;
+    setUpPlaneMeasurement (frame, result, filter);
+    filter.setMaxRotation (p.repeated_print_max_rotation);
+    filter.setMaxShiftRatio (p.repeated_print_max_shift);
+    filter.setMinInsideShare (p.repeated_print_min_inside);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("repeated_prints", watch.getTime());
   return true;
 }
 
@@ -943,7 +977,8 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
-      mergeBySize (p, frame, result) && searchBySize (p, frame, result)) {
+      mergeBySize (p, frame, result) && removeRepeatedPrints (p, frame, result) &&
+      searchBySize (p, frame, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)
       centerModelFrame (model);

@@ -84,30 +84,13 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
 std::string
 ModelSizeMeasurement::measurementProblem (const ObjectModels& models) const
 {
-  if (!keypoints_)
-    return "no input keypoints";
-  if (!isValidKeypointSurface (surface_, keypoints_->size()))
-    return "the keypoint surface is not an organized frame holding every keypoint's "
-           "pixel";
-  if (!(max_step_ > 0.0f) || !(max_radius_ > 0.0f) || !(plane_tolerance_ > 0.0f))
-    return "the step, radius and plane tolerance must be > 0";
+  if (std::string problem = planeMeasurementProblem (models); !problem.empty())
+    return problem;
   if (!(size_tolerance_ >= 0.0f) || !(relative_size_tolerance_ >= 0.0f))
     return "the size tolerances must be >= 0";
   if (min_agreeing_ < 1)
     return "at least one instance must agree on a size";
-  for (const auto& model : models)
-    for (const auto& instance : model.instances)
-      for (const auto k : instance.keypoints)
-        if (k < 0 || static_cast<std::size_t> (k) >= keypoints_->size())
-          return "an instance observes a keypoint outside the input keypoints";
   return "";
-}
-
-bool
-ModelSizeMeasurement::fitPlane (Eigen::Vector4f& plane) const
-{
-  return fitSupportPlane (
-      *surface_.organized, plane_tolerance_, kMinSupportPlaneShare, plane);
 }
 
 bool

@@ -81,6 +81,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "patches",
                             "surface",
                             "size_merge",
+                            "repeated_prints",
                             "size_search",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
