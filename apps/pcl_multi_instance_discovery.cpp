@@ -178,8 +178,11 @@ printHelp (const char* program)
   line ("-repeat_shift R",
         "repeated prints: largest shift, times the object box's shortest edge",
         static_cast<double> (d.repeated_print_max_shift));
+  line ("-repeat_along R",
+        "repeated prints: largest shift, times the object box's width along it",
+        static_cast<double> (d.repeated_print_max_shift_along));
   line ("-repeat_inside S",
-        "repeated prints: share of an instance's keypoints in the other's object box",
+        "repeated prints: smallest share of an instance's keypoints in the other's box",
         static_cast<double> (d.repeated_print_min_inside));
   line ("-size_kp N",
         "size search: free keypoints an object needs to become an instance",
@@ -316,6 +319,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_repeated_prints", 0},
                                       {"-repeat_rot", 1},
                                       {"-repeat_shift", 1},
+                                      {"-repeat_along", 1},
                                       {"-repeat_inside", 1},
                                       {"-no_size_search", 0},
                                       {"-size_kp", 1},
@@ -465,6 +469,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
       parseDegrees (argc, argv, "-repeat_rot", p.repeated_print_max_rotation) &&
       parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
+      parseNumber (argc, argv, "-repeat_along", p.repeated_print_max_shift_along) &&
       parseNumber (argc, argv, "-repeat_inside", p.repeated_print_min_inside) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&
       parseNumber (argc, argv, "-size_agree", p.size_search_min_agreeing) &&

@@ -248,6 +248,11 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "repeated_print_max_shift",
              static_cast<double> (p.repeated_print_max_shift),
              "finite and >= 0");
+  c.require (p.repeated_print_max_shift_along >= 0.0f &&
+                 std::isfinite (p.repeated_print_max_shift_along),
+             "repeated_print_max_shift_along",
+             static_cast<double> (p.repeated_print_max_shift_along),
+             "finite and >= 0");
   c.require (p.repeated_print_min_inside >= 0.0f && p.repeated_print_min_inside <= 1.0f,
              "repeated_print_min_inside",
              static_cast<double> (p.repeated_print_min_inside),

@@ -828,6 +828,7 @@ removeRepeatedPrints (const DiscoveryParameters& p,
     setUpPlaneMeasurement (frame, result, filter);
     filter.setMaxRotation (p.repeated_print_max_rotation);
     filter.setMaxShiftRatio (p.repeated_print_max_shift);
+    filter.setMaxShiftAlongWidth (p.repeated_print_max_shift_along);
     filter.setMinInsideShare (p.repeated_print_min_inside);
     std::size_t removed = 0;
     if (!filter.filter (result.models, removed))

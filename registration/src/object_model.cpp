@@ -102,15 +102,23 @@ updateModelDiameter (ObjectModel& model)
   model.diameter = diameter;
 }
 
+Eigen::Vector3f
+landmarkCentroid (const ObjectModel& model)
+{
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (const auto& l : model.landmarks)
+    centroid += l.getVector3fMap();
+  if (!model.landmarks.empty())
+    centroid /= static_cast<float> (model.landmarks.size());
+  return centroid;
+}
+
 void
 centerModelFrame (ObjectModel& model)
 {
   if (model.landmarks.empty())
     return;
-  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-  for (const auto& l : model.landmarks)
-    centroid += l.getVector3fMap();
-  centroid /= static_cast<float> (model.landmarks.size());
+  const Eigen::Vector3f centroid = landmarkCentroid (model);
   for (auto& l : model.landmarks)
     l.getVector3fMap() -= centroid;
   for (auto& instance : model.instances)
@@ -154,6 +162,8 @@ modelOfKeypoints (const KeypointCloud& keypoints,
                   const pcl::Indices& observed)
 {
   ObjectModel model;
+  if (observed.empty())
+    return model;
   addInstanceOfKeypoints (
       keypoints, descriptors, observed, Eigen::Matrix4f::Identity(), model);
   centerModelFrame (model);

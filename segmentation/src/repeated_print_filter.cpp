@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -18,16 +19,21 @@ namespace {
   */
 constexpr float kBoxMargin = 0.005f;
 
-/** The centroid of a model's landmarks (model frame); the origin without landmarks. */
-Eigen::Vector3f
-landmarkCentroid (const ObjectModel& model)
+/** Width of `box` along the unit direction `direction` (metres). */
+float
+widthAlong (const InstanceExtent& box, const Eigen::Vector3f& direction)
 {
-  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-  for (const auto& landmark : model.landmarks)
-    centroid += landmark.getVector3fMap();
-  return model.landmarks.empty()
-             ? centroid
-             : Eigen::Vector3f (centroid / static_cast<float> (model.landmarks.size()));
+  float width = 0.0f;
+  for (int axis = 0; axis < 3; ++axis)
+    width += std::abs (direction.dot (box.pose.block<3, 1> (0, axis))) * box.size[axis];
+  return width;
+}
+
+/** Where `pose` (model -> camera) puts the model point `point`. */
+Eigen::Vector3f
+placed (const Eigen::Matrix4f& pose, const Eigen::Vector3f& point)
+{
+  return pose.topLeftCorner<3, 3>() * point + pose.topRightCorner<3, 1>();
 }
 
 /** Share of `instance`'s keypoints inside `box` (within kBoxMargin of it). */
@@ -61,6 +67,7 @@ RepeatedPrintFilter::inputProblem (const ObjectModels& models) const
     return problem;
   if (!(max_rotation_ >= 0.0f && max_rotation_ <= static_cast<float> (M_PI)) ||
       !(max_shift_ratio_ >= 0.0f) || !std::isfinite (max_shift_ratio_) ||
+      !(max_shift_along_width_ >= 0.0f) || !std::isfinite (max_shift_along_width_) ||
       !(min_inside_share_ >= 0.0f && min_inside_share_ <= 1.0f))
     return "the rotation must be in [0, pi], the shift ratio finite and >= 0, the "
            "inside "
@@ -81,6 +88,7 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
   if (models.empty() || !fitPlane (plane))
     return true;
   const auto& organized = *surface_.organized;
+  const float any_distance = std::numeric_limits<float>::infinity();
   for (auto& model : models) {
     const Eigen::Vector3f centroid = landmarkCentroid (model);
     const auto& instances = model.instances;
@@ -95,6 +103,18 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
       const ModelInstance& first = instances[order[i]];
       if (repeat[order[i]])
         continue;
+      // Only the instances turned by less than max_rotation can repeat it: the object box
+      // is grown for those alone.
+      std::vector<std::size_t> turned_alike;
+      for (std::size_t j = i + 1; j < order.size(); ++j)
+        if (!repeat[order[j]] && posesCoincide (first.pose,
+                                                instances[order[j]].pose,
+                                                centroid,
+                                                max_rotation_,
+                                                any_distance))
+          turned_alike.push_back (order[j]);
+      if (turned_alike.empty())
+        continue;
       pcl::Indices seeds;
       for (const auto k : first.keypoints)
         seeds.push_back (surface_.keypoint_pixels[static_cast<std::size_t> (k)]);
@@ -102,31 +122,26 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
       if (!measureInstanceExtent (
               organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, box))
         continue;
-      const Eigen::Vector3f first_centre = first.pose.topLeftCorner<3, 3>() * centroid +
-                                           first.pose.topRightCorner<3, 1>();
-      for (std::size_t j = i + 1; j < order.size(); ++j) {
-        const ModelInstance& second = instances[order[j]];
-        if (repeat[order[j]])
-          continue;
-        const Eigen::Matrix3f turn = second.pose.topLeftCorner<3, 3>() *
-                                     first.pose.topLeftCorner<3, 3>().transpose();
-        const Eigen::Vector3f second_centre =
-            second.pose.topLeftCorner<3, 3>() * centroid +
-            second.pose.topRightCorner<3, 1>();
-        repeat[order[j]] = Eigen::AngleAxisf (turn).angle() < max_rotation_ &&
-                           (second_centre - first_centre).norm() <
-                               max_shift_ratio_ * box.size.minCoeff() &&
-                           shareInside (*keypoints_, second, box) >= min_inside_share_;
+      for (const std::size_t j : turned_alike) {
+        const ModelInstance& second = instances[j];
+        const Eigen::Vector3f shift =
+            placed (second.pose, centroid) - placed (first.pose, centroid);
+        const float max_shift =
+            std::min (max_shift_ratio_ * box.size.minCoeff(),
+                      max_shift_along_width_ * widthAlong (box, shift.normalized()));
+        repeat[j] = shift.norm() < max_shift &&
+                    shareInside (*keypoints_, second, box) >= min_inside_share_;
       }
     }
     ModelInstances kept;
     for (std::size_t i = 0; i < instances.size(); ++i)
       if (!repeat[i])
         kept.push_back (instances[i]);
-    removed += instances.size() - kept.size();
-    // A model of repeats alone is no object: it is left empty, and removed below.
+    // A model of repeats alone is no object: its last instance goes too, and the model
+    // below.
     if (kept.size() < 2 && kept.size() < instances.size())
       kept.clear();
+    removed += instances.size() - kept.size();
     model.instances.swap (kept);
   }
   models.erase (std::remove_if (

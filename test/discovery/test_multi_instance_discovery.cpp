@@ -9,6 +9,7 @@
 #include <pcl/common/transforms.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -432,6 +433,23 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   parameters.relative_size_tolerance = -0.01f;
   EXPECT_FALSE (mid::validateDiscoveryParameters (parameters, problem));
   EXPECT_NE (problem.find ("relative_size_tolerance"), std::string::npos);
+  const auto refuses = [&problem] (const mid::DiscoveryParameters& bad,
+                                   const char* name) {
+    EXPECT_FALSE (mid::validateDiscoveryParameters (bad, problem)) << name;
+    EXPECT_NE (problem.find (name), std::string::npos) << problem;
+  };
+  mid::DiscoveryParameters turn;
+  turn.repeated_print_max_rotation = 4.0f;
+  refuses (turn, "repeated_print_max_rotation");
+  mid::DiscoveryParameters shift;
+  shift.repeated_print_max_shift = -0.1f;
+  refuses (shift, "repeated_print_max_shift");
+  mid::DiscoveryParameters along;
+  along.repeated_print_max_shift_along = std::numeric_limits<float>::infinity();
+  refuses (along, "repeated_print_max_shift_along");
+  mid::DiscoveryParameters inside;
+  inside.repeated_print_min_inside = 1.5f;
+  refuses (inside, "repeated_print_min_inside");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

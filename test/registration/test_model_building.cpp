@@ -603,7 +603,9 @@ TEST (ModelFrame, ModelOfKeypointsIsCentredOnThemAndPlacesEachOnItsKeypoint)
   EXPECT_NEAR (model.diameter, diameter, 1e-6f);
 
   const pcl::Indices none;
-  EXPECT_TRUE (mid::modelOfKeypoints (keypoints, descriptors, none).landmarks.empty());
+  const mid::ObjectModel empty = mid::modelOfKeypoints (keypoints, descriptors, none);
+  EXPECT_TRUE (empty.landmarks.empty());
+  EXPECT_TRUE (empty.instances.empty());
 }
 
 TEST (ModelFrame, AnInstanceOfKeypointsCarriesThemIntoTheModelFrame)
@@ -621,12 +623,17 @@ TEST (ModelFrame, AnInstanceOfKeypointsCarriesThemIntoTheModelFrame)
   const std::vector<Eigen::Vector3f> in_model = {{0.03f, 0.02f, -0.01f},
                                                  {-0.04f, 0.05f, 0.02f}};
   mid::KeypointCloud keypoints;
-  mid::SIFTDescriptorCloud descriptors (2, 1);
+  mid::SIFTDescriptorCloud descriptors;
   for (const auto& point : in_model) {
     pcl::PointNormal keypoint;
     keypoint.getVector3fMap() = motion * point;
     keypoint.getNormalVector3fMap() = motion.linear() * Eigen::Vector3f::UnitX();
     keypoints.push_back (keypoint);
+    mid::SIFTDescriptor descriptor;
+    std::fill (std::begin (descriptor.histogram),
+               std::end (descriptor.histogram),
+               static_cast<float> (10 + keypoints.size()));
+    descriptors.push_back (descriptor);
   }
   mid::addInstanceOfKeypoints (keypoints, descriptors, {0, 1}, motion.matrix(), model);
 
@@ -635,6 +642,10 @@ TEST (ModelFrame, AnInstanceOfKeypointsCarriesThemIntoTheModelFrame)
   EXPECT_EQ (model.descriptors.size(), 3u);
   EXPECT_EQ (model.descriptor_landmarks, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ (model.instances.front().landmarks, (std::vector<int>{1, 2}));
+  EXPECT_EQ (model.instances.front().keypoints, (pcl::Indices{0, 1}));
+  EXPECT_TRUE (model.instances.front().pose.isApprox (motion.matrix()));
+  EXPECT_EQ (model.descriptors[1].histogram[0], 11.0f);
+  EXPECT_EQ (model.descriptors[2].histogram[127], 12.0f);
   for (std::size_t i = 0; i < in_model.size(); ++i) {
     EXPECT_LT ((model.landmarks[i + 1].getVector3fMap() - in_model[i]).norm(), 1e-5f);
     EXPECT_LT (

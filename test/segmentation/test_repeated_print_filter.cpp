@@ -141,7 +141,8 @@ TEST (RepeatedPrintFilter, RemovesAModelOfRepeatsAlone)
   const auto [instances, removed] =
       filtered (filterIn (scene),
                 modelWithRepeat (scene, repeatOn (scene, 0, 0.02f, 0.0f), false));
-  EXPECT_EQ (removed, 1u);
+  // The repeat goes, then the model with its last instance: both count as removed.
+  EXPECT_EQ (removed, 2u);
   EXPECT_TRUE (instances.empty());
 }
 
@@ -155,7 +156,7 @@ TEST (RepeatedPrintFilter, KeepsTurnedInstancesUnlessTurnsAreAllowed)
   EXPECT_EQ (filtered (filterIn (scene), model).second, 0u);
   mid::RepeatedPrintFilter any_turn = filterIn (scene);
   any_turn.setMaxRotation (static_cast<float> (M_PI));
-  EXPECT_EQ (filtered (any_turn, model).second, 1u);
+  EXPECT_EQ (filtered (any_turn, model).second, 2u); // the repeat, then the model
 }
 
 TEST (RepeatedPrintFilter, KeepsAnInstanceWhoseKeypointsLieOnAnotherBox)
@@ -169,22 +170,47 @@ TEST (RepeatedPrintFilter, KeepsAnInstanceWhoseKeypointsLieOnAnotherBox)
   EXPECT_EQ (filtered (filterIn (scene), model).second, 0u);
   mid::RepeatedPrintFilter anywhere = filterIn (scene);
   anywhere.setMinInsideShare (0.0f);
-  EXPECT_EQ (filtered (anywhere, model).second, 1u);
+  EXPECT_EQ (filtered (anywhere, model).second, 2u); // the repeat, then the model
 }
 
 TEST (RepeatedPrintFilter, KeepsTouchingCopiesThatLieAlike)
 {
   // The two copies' tops join into one surface, so the box grown from one holds the other's
-  // keypoints; they lie a copy's width (0.09 m) apart, more than 0.75 x 0.04 m.
+  // keypoints; they lie a copy's width (0.09 m) apart.
   const Boxes scene (twoTouchingAlike());
   const mid::ObjectModel model = scene.modelOf ({0, 1});
   const auto [instances, removed] = filtered (filterIn (scene), model);
   EXPECT_EQ (removed, 0u);
   EXPECT_EQ (instances.size(), 2u);
-  // What keeps them is the shift: allowed up to 10 box edges, one is taken for a repeat.
+  // Both shift bounds keep them (0.09 m against 0.75 x 0.04 m and 0.25 x 0.18 m): with either
+  // loosened they stay, with both loosened the model of the two is taken for a repeat.
+  mid::RepeatedPrintFilter far_edges = filterIn (scene);
+  far_edges.setMaxShiftRatio (10.0f);
+  EXPECT_EQ (filtered (far_edges, model).second, 0u);
+  mid::RepeatedPrintFilter far_width = filterIn (scene);
+  far_width.setMaxShiftAlongWidth (10.0f);
+  EXPECT_EQ (filtered (far_width, model).second, 0u);
   mid::RepeatedPrintFilter far = filterIn (scene);
   far.setMaxShiftRatio (10.0f);
-  EXPECT_EQ (filtered (far, model).second, 1u);
+  far.setMaxShiftAlongWidth (10.0f);
+  EXPECT_EQ (filtered (far, model).second, 2u);
+}
+
+TEST (RepeatedPrintFilter, KeepsThinCopiesStandingSideBySide)
+{
+  // Two boxes standing on their 0.12 x 0.04 face, touching along it like books: their tops
+  // join into a 0.12 x 0.08 face, the box of both is 0.08 thick, and the copies lie 0.04 m
+  // apart, less than 0.75 x 0.08 m. The box's width along the shift (0.08 m) keeps them.
+  const Eigen::Vector3d standing (0.12, 0.04, 0.09);
+  const Boxes scene ({restingBox (kSoyPrint, 0.0, 0.1, 0.0, standing),
+                      restingBox (kSoyPrint, 0.0, 0.14, 0.0, standing)});
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  const auto [instances, removed] = filtered (filterIn (scene), model);
+  EXPECT_EQ (removed, 0u);
+  EXPECT_EQ (instances.size(), 2u);
+  mid::RepeatedPrintFilter far_width = filterIn (scene);
+  far_width.setMaxShiftAlongWidth (10.0f);
+  EXPECT_EQ (filtered (far_width, model).second, 2u);
 }
 
 TEST (RepeatedPrintFilter, RefusesBadInputAndLeavesTheModels)
@@ -207,6 +233,9 @@ TEST (RepeatedPrintFilter, RefusesBadInputAndLeavesTheModels)
   mid::RepeatedPrintFilter shift = filterIn (scene);
   shift.setMaxShiftRatio (-1.0f);
   refused (shift);
+  mid::RepeatedPrintFilter along = filterIn (scene);
+  along.setMaxShiftAlongWidth (std::numeric_limits<float>::quiet_NaN());
+  refused (along);
   mid::RepeatedPrintFilter share = filterIn (scene);
   share.setMinInsideShare (1.5f);
   refused (share);

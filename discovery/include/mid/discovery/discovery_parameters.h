@@ -322,7 +322,8 @@ struct DiscoveryParameters
     * RepeatedPrintFilter): the other instance's object box (grown from its keypoints alone)
     * holds at least repeated_print_min_inside (in [0, 1]) of the instance's keypoints, the
     * two poses differ by less than repeated_print_max_rotation (radians, in [0, pi]) and move
-    * the landmarks by less than repeated_print_max_shift (>= 0) times the box's shortest edge.
+    * the landmarks by less than repeated_print_max_shift (>= 0) times the box's shortest edge
+    * and repeated_print_max_shift_along (>= 0) times its width along the shift.
     * A model left with one instance goes. Needs the organized frame. Scored frames: F1 0.877
     * -> 0.889, development 0.873 -> 0.879 and 0.863 -> 0.868 (doc/benchmark.md, session 30).
     */
@@ -330,6 +331,7 @@ struct DiscoveryParameters
   bool remove_repeated_prints = true;
   float repeated_print_max_rotation = 0.2617994f; // 15 deg
   float repeated_print_max_shift = 0.75f;
+  float repeated_print_max_shift_along = 0.25f;
   float repeated_print_min_inside = 0.8f;
   ///@}
   /** \brief After the size merge, find the copies that show none of a model's landmarks by

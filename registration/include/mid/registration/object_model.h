@@ -116,6 +116,12 @@ extractModelPart (const ObjectModel& model,
 void
 updateModelDiameter (ObjectModel& model);
 
+/** \brief The centroid of a model's landmarks (model frame, metres); the origin for a model
+  * without landmarks.
+  */
+Eigen::Vector3f
+landmarkCentroid (const ObjectModel& model);
+
 /** \brief Move a model's frame to its landmarks' centroid, keeping its axes: the landmarks
   * are shifted and every instance's pose compensates, so each instance still places every
   * landmark where it was in the camera frame (nothing changes for a model without landmarks).
@@ -151,7 +157,7 @@ addInstanceOfKeypoints (const KeypointCloud& keypoints,
   * \param[in] keypoints the frame's keypoints (camera frame, metres)
   * \param[in] descriptors one per keypoint
   * \param[in] observed the keypoints of the model (valid indices, not checked)
-  * \return the model; without landmarks when `observed` is empty
+  * \return the model; without landmarks and instances when `observed` is empty
   */
 ObjectModel
 modelOfKeypoints (const KeypointCloud& keypoints,
