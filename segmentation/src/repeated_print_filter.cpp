@@ -69,9 +69,8 @@ RepeatedPrintFilter::inputProblem (const ObjectModels& models) const
       !(max_shift_ratio_ >= 0.0f) || !std::isfinite (max_shift_ratio_) ||
       !(max_shift_along_width_ >= 0.0f) || !std::isfinite (max_shift_along_width_) ||
       !(min_inside_share_ >= 0.0f && min_inside_share_ <= 1.0f))
-    return "the rotation must be in [0, pi], the shift ratio finite and >= 0, the "
-           "inside "
-           "share in [0, 1]";
+    return "the rotation must be in [0, pi], the shift ratios finite and >= 0, the "
+           "inside share in [0, 1]";
   return "";
 }
 
@@ -126,10 +125,12 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
         const ModelInstance& second = instances[j];
         const Eigen::Vector3f shift =
             placed (second.pose, centroid) - placed (first.pose, centroid);
-        const float max_shift =
-            std::min (max_shift_ratio_ * box.size.minCoeff(),
-                      max_shift_along_width_ * widthAlong (box, shift.normalized()));
-        repeat[j] = shift.norm() < max_shift &&
+        const float distance = shift.norm();
+        // Two instances at one place (no shift) have no direction: the widest is taken.
+        const float width =
+            distance > 0.0f ? widthAlong (box, shift / distance) : box.size.maxCoeff();
+        repeat[j] = distance < std::min (max_shift_ratio_ * box.size.minCoeff(),
+                                         max_shift_along_width_ * width) &&
                     shareInside (*keypoints_, second, box) >= min_inside_share_;
       }
     }

@@ -135,6 +135,19 @@ TEST (RepeatedPrintFilter, RemovesTheRepeatOnOneBoxAndKeepsTheCopy)
   EXPECT_EQ (scene.boxOf (instances[1].keypoints), 1);
 }
 
+TEST (RepeatedPrintFilter, RemovesAnInstanceAtTheSamePlace)
+{
+  // A second instance of box 0 at its very pose (no shift, so no direction to measure the
+  // box's width along) observing part of its keypoints; the copy on box 1 stays.
+  const Boxes scene (twoApart());
+  mid::ObjectModel model =
+      modelWithRepeat (scene, repeatOn (scene, 0, 0.0f, 0.0f), true);
+  const auto [instances, removed] = filtered (filterIn (scene), model);
+  EXPECT_EQ (removed, 1u);
+  ASSERT_EQ (instances.size(), 2u);
+  EXPECT_EQ (scene.boxOf (instances[1].keypoints), 1);
+}
+
 TEST (RepeatedPrintFilter, RemovesAModelOfRepeatsAlone)
 {
   const Boxes scene (twoApart());
