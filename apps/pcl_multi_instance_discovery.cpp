@@ -184,6 +184,12 @@ printHelp (const char* program)
   line ("-repeat_inside S",
         "repeated prints: smallest share of an instance's keypoints in the other's box",
         static_cast<double> (d.repeated_print_min_inside));
+  line ("-obs_residual D",
+        "observations: largest distance of a kept one from its landmark, metres",
+        static_cast<double> (d.observation_max_residual));
+  line ("-obs_margin D",
+        "observations: largest distance of a kept one outside the model's box, metres",
+        static_cast<double> (d.observation_box_margin));
   line ("-size_kp N",
         "size search: free keypoints an object needs to become an instance",
         d.size_search_min_keypoints);
@@ -260,6 +266,10 @@ printHelp (const char* program)
       "repeats\n");
   print_info ("                      on it (the paper's behaviour)\n");
   print_info (
+      "  -keep_unexplained   keep the observations an instance's pose does not explain "
+      "(the\n");
+  print_info ("                      paper's behaviour)\n");
+  print_info (
       "  -no_size_search     do not look for copies of a model's size that show none "
       "of its\n");
   print_info (
@@ -321,6 +331,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-repeat_shift", 1},
                                       {"-repeat_along", 1},
                                       {"-repeat_inside", 1},
+                                      {"-keep_unexplained", 0},
+                                      {"-obs_residual", 1},
+                                      {"-obs_margin", 1},
                                       {"-no_size_search", 0},
                                       {"-size_kp", 1},
                                       {"-size_agree", 1},
@@ -418,6 +431,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
   p.remove_repeated_prints =
       !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");
+  p.prune_observations = !pcl::console::find_switch (argc, argv, "-keep_unexplained");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =
@@ -471,6 +485,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
       parseNumber (argc, argv, "-repeat_along", p.repeated_print_max_shift_along) &&
       parseNumber (argc, argv, "-repeat_inside", p.repeated_print_min_inside) &&
+      parseNumber (argc, argv, "-obs_residual", p.observation_max_residual) &&
+      parseNumber (argc, argv, "-obs_margin", p.observation_box_margin) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&
       parseNumber (argc, argv, "-size_agree", p.size_search_min_agreeing) &&
       parseNumber (argc, argv, "-size_surrounded", p.size_discovery_max_surrounded) &&

@@ -275,6 +275,15 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "size_discovery_min_edge",
              static_cast<double> (p.size_discovery_min_edge),
              "finite and >= 0");
+  c.require (p.observation_max_residual > 0.0f &&
+                 std::isfinite (p.observation_max_residual),
+             "observation_max_residual",
+             static_cast<double> (p.observation_max_residual),
+             "finite and > 0");
+  c.require (p.observation_box_margin >= 0.0f && std::isfinite (p.observation_box_margin),
+             "observation_box_margin",
+             static_cast<double> (p.observation_box_margin),
+             "finite and >= 0");
   c.require (p.min_region_merge_inliers >= 3,
              "min_region_merge_inliers",
              static_cast<double> (p.min_region_merge_inliers),

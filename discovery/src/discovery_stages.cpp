@@ -7,6 +7,7 @@
 #include <mid/registration/landmark_box.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/model_merging.h>
+#include <mid/registration/observation_pruning.h>
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
 #include <mid/registration/region_model_merger.h>
@@ -866,6 +867,27 @@ searchBySize (const DiscoveryParameters& p,
   return true;
 }
 
+/** Drop the observations that the instances' poses do not explain
+  * (DiscoveryParameters::prune_observations); times the "observations" stage either way.
+  */
+bool
+pruneObservations (const DiscoveryParameters& p, DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.prune_observations)
+    for (auto& model : result.models) {
+      std::size_t dropped = 0;
+      if (!pruneUnexplainedObservations (*result.keypoints,
+                                         p.observation_max_residual,
+                                         p.observation_box_margin,
+                                         model,
+                                         dropped))
+        return false;
+    }
+  result.timing_ms.emplace_back ("observations", watch.getTime());
+  return true;
+}
+
 /** discoverFromKeypoints() without its cleanup on failure. */
 bool
 runStages (const DiscoveryParameters& p,
@@ -979,7 +1001,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const KeypointSurface frame = frameSurface (p, organized);
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
       mergeBySize (p, frame, result) && removeRepeatedPrints (p, frame, result) &&
-      searchBySize (p, frame, result)) {
+      searchBySize (p, frame, result) && pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)
       centerModelFrame (model);

@@ -83,6 +83,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "size_merge",
                             "repeated_prints",
                             "size_search",
+                            "observations",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;

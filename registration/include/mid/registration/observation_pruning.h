@@ -1,0 +1,51 @@
+#pragma once
+
+#include <mid/features/keypoint_types.h>
+#include <mid/registration/object_model.h>
+
+#include <cstddef>
+
+namespace mid {
+
+/** \brief Drop the observations that an instance's pose does not explain (not in the paper).
+  *
+  * Joint refinement makes every landmark the mean of its observations, so a keypoint that
+  * joined an instance without lying on its copy (a keypoint of a touching copy, brought in by
+  * a cluster that spans two copies, or a landmark built from two places of one print) stays
+  * far from where the pose puts its landmark, or outside the model's box. Such a keypoint is
+  * not the instance's: the instance's keypoints and its image box (what a result reports, and
+  * what the paper's scoring counts: 90 % of an instance's keypoints on one copy) should not
+  * hold it.
+  *
+  * An observation (keypoint k of an instance at pose T, observing landmark l) is kept when
+  * both hold:
+  * - |T^-1 k - l| <= max_residual;
+  * - T^-1 k lies within box_margin of the model's landmark box (computeLandmarkBox(), taken
+  *   before anything is dropped; with fewer than 3 landmarks there is no box and only the
+  *   residual counts).
+  *
+  * An instance that would keep none of its observations, or whose pose is not finite, keeps
+  * them all: its pose rests on other evidence (the depth, a box measured on the table). A
+  * landmark whose every observation is dropped is removed with its descriptors (the others
+  * are renumbered); a landmark that no instance observed before stays. Poses do not change.
+  *
+  * \param[in] keypoints the frame's keypoints that the observations index (camera frame,
+  * metres)
+  * \param[in] max_residual largest distance of a kept observation from its landmark, in the
+  * model frame (metres, > 0)
+  * \param[in] box_margin largest distance of a kept observation outside the landmark box
+  * (metres, >= 0)
+  * \param[in,out] model its instances' observations, landmarks and descriptors are pruned,
+  * its diameter updated; its frame is not centred again (centerModelFrame())
+  * \param[out] dropped how many observations were dropped (0 on failure)
+  * \return false, with a PCL_ERROR and the model unchanged, for a bound out of its range or an
+  * observation whose keypoint or landmark does not exist
+  */
+bool
+pruneUnexplainedObservations (const KeypointCloud& keypoints,
+                              float max_residual,
+                              float box_margin,
+                              ObjectModel& model,
+                              std::size_t& dropped);
+
+} // namespace mid

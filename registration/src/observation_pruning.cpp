@@ -1,0 +1,140 @@
+#include <mid/registration/landmark_box.h>
+#include <mid/registration/observation_pruning.h>
+
+#include <pcl/console/print.h>
+
+#include <vector>
+
+namespace mid {
+
+namespace {
+
+/** True if every observation of the model's instances names an existing keypoint and
+  * landmark, each instance has as many landmarks as keypoints, and every descriptor names an
+  * existing landmark.
+  */
+bool
+observationsExist (const KeypointCloud& keypoints, const ObjectModel& model)
+{
+  for (const auto& instance : model.instances) {
+    if (instance.keypoints.size() != instance.landmarks.size())
+      return false;
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
+      if (instance.keypoints[o] < 0 ||
+          static_cast<std::size_t> (instance.keypoints[o]) >= keypoints.size() ||
+          instance.landmarks[o] < 0 ||
+          static_cast<std::size_t> (instance.landmarks[o]) >= model.landmarks.size())
+        return false;
+  }
+  for (const int l : model.descriptor_landmarks)
+    if (l < 0 || static_cast<std::size_t> (l) >= model.landmarks.size())
+      return false;
+  return model.descriptor_landmarks.size() == model.descriptors.size();
+}
+
+/** How many observations each landmark has among the model's instances. */
+std::vector<std::size_t>
+observationCounts (const ObjectModel& model)
+{
+  std::vector<std::size_t> counts (model.landmarks.size(), 0);
+  for (const auto& instance : model.instances)
+    for (const int l : instance.landmarks)
+      ++counts[static_cast<std::size_t> (l)];
+  return counts;
+}
+
+/** Remove the landmarks flagged in `remove` with their descriptors, renumbering the rest in
+  * the descriptors' and instances' references (no instance may observe a removed one).
+  */
+void
+removeLandmarks (const std::vector<bool>& remove, ObjectModel& model)
+{
+  std::vector<int> renumbered (model.landmarks.size(), -1);
+  KeypointCloud landmarks;
+  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
+    if (!remove[l]) {
+      renumbered[l] = static_cast<int> (landmarks.size());
+      landmarks.push_back (model.landmarks[l]);
+    }
+  SIFTDescriptorCloud descriptors;
+  std::vector<int> descriptor_landmarks;
+  for (std::size_t d = 0; d < model.descriptors.size(); ++d) {
+    const int l = renumbered[static_cast<std::size_t> (model.descriptor_landmarks[d])];
+    if (l >= 0) {
+      descriptors.push_back (model.descriptors[d]);
+      descriptor_landmarks.push_back (l);
+    }
+  }
+  for (auto& instance : model.instances)
+    for (auto& l : instance.landmarks)
+      l = renumbered[static_cast<std::size_t> (l)];
+  model.landmarks = landmarks;
+  model.descriptors = descriptors;
+  model.descriptor_landmarks = descriptor_landmarks;
+}
+
+} // namespace
+
+bool
+pruneUnexplainedObservations (const KeypointCloud& keypoints,
+                              float max_residual,
+                              float box_margin,
+                              ObjectModel& model,
+                              std::size_t& dropped)
+{
+  dropped = 0;
+  if (!(max_residual > 0.0f) || !(box_margin >= 0.0f)) {
+    PCL_ERROR ("[mid::pruneUnexplainedObservations] The largest residual must be > 0 and "
+               "the box margin >= 0 (given %g and %g).\n",
+               static_cast<double> (max_residual),
+               static_cast<double> (box_margin));
+    return false;
+  }
+  if (!observationsExist (keypoints, model)) {
+    PCL_ERROR ("[mid::pruneUnexplainedObservations] An observation names a keypoint or "
+               "landmark that does not exist, or the descriptors do not match their "
+               "landmark list.\n");
+    return false;
+  }
+  const LandmarkBox box = computeLandmarkBox (model);
+  const std::vector<std::size_t> before = observationCounts (model);
+  for (auto& instance : model.instances) {
+    if (!instance.pose.allFinite())
+      continue;
+    const Eigen::Matrix4f to_model = instance.pose.inverse();
+    ModelInstance kept = instance;
+    kept.keypoints.clear();
+    kept.landmarks.clear();
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+      const Eigen::Vector3f local =
+          to_model.topLeftCorner<3, 3>() *
+              keypoints[static_cast<std::size_t> (instance.keypoints[o])]
+                  .getVector3fMap() +
+          to_model.topRightCorner<3, 1>();
+      const Eigen::Vector3f landmark =
+          model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
+              .getVector3fMap();
+      const bool in_box = !box.valid || box.distanceTo (local) <= box_margin;
+      if ((local - landmark).norm() <= max_residual && in_box) {
+        kept.keypoints.push_back (instance.keypoints[o]);
+        kept.landmarks.push_back (instance.landmarks[o]);
+      }
+    }
+    if (kept.keypoints.empty() || kept.keypoints.size() == instance.keypoints.size())
+      continue;
+    dropped += instance.keypoints.size() - kept.keypoints.size();
+    updateInstanceError (model, keypoints, kept);
+    instance = kept;
+  }
+  if (dropped == 0)
+    return true;
+  const std::vector<std::size_t> after = observationCounts (model);
+  std::vector<bool> remove (model.landmarks.size(), false);
+  for (std::size_t l = 0; l < remove.size(); ++l)
+    remove[l] = before[l] > 0 && after[l] == 0;
+  removeLandmarks (remove, model);
+  updateModelDiameter (model);
+  return true;
+}
+
+} // namespace mid
