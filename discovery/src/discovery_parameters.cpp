@@ -280,7 +280,8 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "observation_max_residual",
              static_cast<double> (p.observation_max_residual),
              "finite and > 0");
-  c.require (p.observation_box_margin >= 0.0f && std::isfinite (p.observation_box_margin),
+  c.require (p.observation_box_margin >= 0.0f &&
+                 std::isfinite (p.observation_box_margin),
              "observation_box_margin",
              static_cast<double> (p.observation_box_margin),
              "finite and >= 0");

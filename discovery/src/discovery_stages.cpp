@@ -7,9 +7,9 @@
 #include <mid/registration/landmark_box.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/model_merging.h>
-#include <mid/registration/observation_pruning.h>
 #include <mid/registration/model_refinement.h>
 #include <mid/registration/multi_instance_model_builder.h>
+#include <mid/registration/observation_pruning.h>
 #include <mid/registration/region_model_merger.h>
 #include <mid/segmentation/appearance_model_splitter.h>
 #include <mid/segmentation/frame_pinhole.h>

@@ -84,10 +84,11 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
 {
   dropped = 0;
   if (!(max_residual > 0.0f) || !(box_margin >= 0.0f)) {
-    PCL_ERROR ("[mid::pruneUnexplainedObservations] The largest residual must be > 0 and "
-               "the box margin >= 0 (given %g and %g).\n",
-               static_cast<double> (max_residual),
-               static_cast<double> (box_margin));
+    PCL_ERROR (
+        "[mid::pruneUnexplainedObservations] The largest residual must be > 0 and "
+        "the box margin >= 0 (given %g and %g).\n",
+        static_cast<double> (max_residual),
+        static_cast<double> (box_margin));
     return false;
   }
   if (!observationsExist (keypoints, model)) {

@@ -71,8 +71,9 @@ smallestShareOnOneBox (const mid::test::RenderedObjectsScene& scene,
     int most = 0;
     for (const auto& vote : votes)
       most = std::max (most, vote.second);
-    smallest = std::min (
-        smallest, static_cast<double> (most) / static_cast<double> (instance.keypoints.size()));
+    smallest = std::min (smallest,
+                         static_cast<double> (most) /
+                             static_cast<double> (instance.keypoints.size()));
   }
   return smallest;
 }
@@ -594,7 +595,8 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
   EXPECT_GT (chained.models.front().diameter, 0.2f);
 }
 
-TEST (MultiInstanceDiscovery, KeepsOnlyTheKeypointsOfTheirCopyInARowOfNearlyTouchingCopies)
+TEST (MultiInstanceDiscovery,
+      KeepsOnlyTheKeypointsOfTheirCopyInARowOfNearlyTouchingCopies)
 {
   // Five juice boxes 5 mm apart in a row, tilted by 35 deg: clusters that span neighbours
   // bring keypoints of the next box into an instance. Its pose does not explain them, and
@@ -611,7 +613,8 @@ TEST (MultiInstanceDiscovery, KeepsOnlyTheKeypointsOfTheirCopyInARowOfNearlyTouc
   ASSERT_EQ (result.models.size(), 1u);
   const auto& model = result.models.front();
   const auto boxes = boxesOf (scene, result, model);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()),
+             (std::set<int>{0, 1, 2, 3, 4}));
   EXPECT_EQ (boxes.size(), 5u);
   EXPECT_GE (smallestShareOnOneBox (scene, result, model), 0.9);
   expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);

@@ -60,7 +60,8 @@ observe (PruningScene& scene,
 {
   auto& observer = scene.model.instances[instance];
   const Eigen::Vector3f at =
-      scene.model.landmarks[static_cast<std::size_t> (landmark)].getVector3fMap() + offset;
+      scene.model.landmarks[static_cast<std::size_t> (landmark)].getVector3fMap() +
+      offset;
   const Eigen::Vector3f camera =
       observer.pose.topLeftCorner<3, 3>() * at + observer.pose.topRightCorner<3, 1>();
   observer.keypoints.push_back (static_cast<pcl::index_t> (scene.keypoints.size()));
@@ -82,10 +83,12 @@ pruningScene ()
   const int grid = static_cast<int> (scene.model.landmarks.size());
   scene.model.landmarks.push_back (
       pointAt (Eigen::Vector3f (0.05f + kOffTheBox, 0.0f, 0.0f), grid));
-  scene.model.landmarks.push_back (pointAt (Eigen::Vector3f (0.0f, 0.01f, 0.0f), grid + 1));
+  scene.model.landmarks.push_back (
+      pointAt (Eigen::Vector3f (0.0f, 0.01f, 0.0f), grid + 1));
   for (std::size_t l = 0; l < scene.model.landmarks.size(); ++l) {
     mid::SIFTDescriptor descriptor;
-    std::fill (std::begin (descriptor.histogram), std::end (descriptor.histogram), 0.0f);
+    std::fill (
+        std::begin (descriptor.histogram), std::end (descriptor.histogram), 0.0f);
     descriptor.histogram[0] = static_cast<float> (l);
     scene.model.descriptors.push_back (descriptor);
     scene.model.descriptor_landmarks.push_back (static_cast<int> (l));
@@ -118,8 +121,8 @@ TEST (ObservationPruning, DropsWhatThePoseDoesNotExplainAndTheLandmarksOnlyThatH
   PruningScene scene = pruningScene();
   const auto grid = static_cast<std::size_t> (189);
   std::size_t dropped = 0;
-  ASSERT_TRUE (
-      mid::pruneUnexplainedObservations (scene.keypoints, kResidual, kMargin, scene.model, dropped));
+  ASSERT_TRUE (mid::pruneUnexplainedObservations (
+      scene.keypoints, kResidual, kMargin, scene.model, dropped));
   // Instance 1's observation of landmark 7 (20 mm off) and of the stray landmark (55 mm
   // outside the box); instance 2, which explains none of its own, keeps them all; the grid's
   // corners, just outside the trimmed box, stay.
@@ -139,7 +142,8 @@ TEST (ObservationPruning, DropsWhatThePoseDoesNotExplainAndTheLandmarksOnlyThatH
   EXPECT_FLOAT_EQ (model.landmarks.back().curvature, 190.0f);
   for (std::size_t d = 0; d < model.descriptors.size(); ++d)
     EXPECT_FLOAT_EQ (
-        model.landmarks[static_cast<std::size_t> (model.descriptor_landmarks[d])].curvature,
+        model.landmarks[static_cast<std::size_t> (model.descriptor_landmarks[d])]
+            .curvature,
         model.descriptors[d].histogram[0]);
   // Every observation still names the landmark its keypoint was made from, and the first two
   // instances place each of theirs on its keypoint.
@@ -147,8 +151,10 @@ TEST (ObservationPruning, DropsWhatThePoseDoesNotExplainAndTheLandmarksOnlyThatH
     const auto& instance = model.instances[n];
     ASSERT_EQ (instance.keypoints.size(), instance.landmarks.size());
     for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
-      const auto& keypoint = scene.keypoints[static_cast<std::size_t> (instance.keypoints[o])];
-      const auto& landmark = model.landmarks[static_cast<std::size_t> (instance.landmarks[o])];
+      const auto& keypoint =
+          scene.keypoints[static_cast<std::size_t> (instance.keypoints[o])];
+      const auto& landmark =
+          model.landmarks[static_cast<std::size_t> (instance.landmarks[o])];
       EXPECT_FLOAT_EQ (landmark.curvature, keypoint.curvature);
       if (n < 2) {
         EXPECT_LT ((instance.pose.topLeftCorner<3, 3>() * landmark.getVector3fMap() +
@@ -193,8 +199,10 @@ TEST (ObservationPruning, RefusesBadBoundsAndObservationsLeavingTheModelAsItWas)
     EXPECT_EQ (scene.model.landmarks.size(), before.model.landmarks.size());
     EXPECT_EQ (scene.model.descriptor_landmarks, before.model.descriptor_landmarks);
     for (std::size_t n = 0; n < scene.model.instances.size(); ++n) {
-      EXPECT_EQ (scene.model.instances[n].keypoints, before.model.instances[n].keypoints);
-      EXPECT_EQ (scene.model.instances[n].landmarks, before.model.instances[n].landmarks);
+      EXPECT_EQ (scene.model.instances[n].keypoints,
+                 before.model.instances[n].keypoints);
+      EXPECT_EQ (scene.model.instances[n].landmarks,
+                 before.model.instances[n].landmarks);
     }
   };
   expectRefused (original, 0.0f, kMargin);
