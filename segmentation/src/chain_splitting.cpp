@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 namespace mid {
 
@@ -23,12 +25,14 @@ constexpr double kMinChainSpan = 1.05;
 /** The cut (in chain units) that numbers the copies: point x lies on copy floor(s(x) - cut).
   * `positions` are the chain coordinates of the sources and of the targets moved back by the
   * stride. A cut through the objects puts them on more copies than a cut between copies, so
-  * the cut is the middle of the empty interval of the positions modulo 1 that puts them on
-  * the fewest copies, the largest such interval on a tie. (The largest empty interval alone
-  * may lie inside every copy, between two printed areas, when copies touch.)
+  * the cut is the middle of an empty interval of the positions modulo 1 that puts them on the
+  * fewest copies. (The largest empty interval alone may lie inside every copy, between two
+  * printed areas, when copies touch.) Of those, the one with the most `gaps` (the places where
+  * the surface shows a gap between copies, for a cut) goes first, then the largest.
   */
 double
-cutBetweenCopies (const std::vector<double>& positions)
+cutBetweenCopies (const std::vector<double>& positions,
+                  const std::function<std::size_t (double)>& gaps)
 {
   std::vector<double> phases;
   phases.reserve (positions.size());
@@ -41,22 +45,45 @@ cutBetweenCopies (const std::vector<double>& positions)
       numbers.insert (static_cast<long> (std::floor (p - cut)));
     return numbers.size();
   };
-  double best_cut = 0.0, best_gap = -1.0;
-  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  // (copies, -gaps, -width) of every empty interval's middle; the smallest wins.
+  std::vector<std::tuple<std::size_t, long, double, double>> candidates;
   for (std::size_t i = 0; i < phases.size(); ++i) {
     // The gap after phases[i], on the circle.
     const double next = i + 1 < phases.size() ? phases[i + 1] : phases.front() + 1.0;
-    const double gap = next - phases[i], cut = phases[i] + gap / 2;
-    if (!(gap > 0.0))
-      continue;
-    const std::size_t count = copies (cut);
-    if (count < fewest || (count == fewest && gap > best_gap)) {
-      fewest = count;
-      best_gap = gap;
-      best_cut = cut;
-    }
+    const double width = next - phases[i], cut = phases[i] + width / 2;
+    if (width > 0.0)
+      candidates.emplace_back (copies (cut), 0L, -width, cut);
   }
-  return best_cut;
+  if (candidates.empty())
+    return 0.0;
+  const std::size_t fewest =
+      std::get<0> (*std::min_element (candidates.begin(), candidates.end()));
+  for (auto& candidate : candidates)
+    if (std::get<0> (candidate) == fewest)
+      std::get<1> (candidate) = -static_cast<long> (gaps (std::get<3> (candidate)));
+  return std::get<3> (*std::min_element (candidates.begin(), candidates.end()));
+}
+
+/** How many of the places where the cut `cut` separates two copies show a gap in the surface:
+  * at each, the cluster keypoints next to it on either side (within half a step) with the
+  * surface between them falling behind (surfaceDropsBetween()). `members` are the cluster's
+  * keypoints sorted by their chain coordinate `chain`.
+  */
+std::size_t
+surfaceGapsAt (double cut,
+               const pcl::Indices& members,
+               const std::function<double (pcl::index_t)>& chain,
+               const KeypointSurface& surface)
+{
+  std::size_t gaps = 0;
+  for (std::size_t i = 0; i + 1 < members.size(); ++i) {
+    const double below = chain (members[i]), above = chain (members[i + 1]);
+    const double boundary = std::floor (above - cut) + cut;
+    if (boundary > below && boundary - below < 0.5 && above - boundary < 0.5 &&
+        surfaceDropsBetween (surface, members[i], members[i + 1], kMinSurfaceGapDrop))
+      ++gaps;
+  }
+  return gaps;
 }
 
 Eigen::Vector3f
@@ -86,7 +113,8 @@ splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
                    float max_rotation,
-                   const Eigen::Vector3f& row_step)
+                   const Eigen::Vector3f& row_step,
+                   const KeypointSurface* surface)
 {
   std::vector<std::size_t> all (cluster.triplets.size());
   std::iota (all.begin(), all.end(), std::size_t{0});
@@ -133,7 +161,15 @@ splitChainCluster (const TripletCluster& cluster,
     positions.push_back (chain (k));
   for (const auto k : cluster.target_indices)
     positions.push_back (chain (k) - static_cast<double> (stride));
-  const double cut = cutBetweenCopies (positions);
+  pcl::Indices along_row =
+      detail::allKeypoints (cluster.source_indices, cluster.target_indices);
+  std::sort (
+      along_row.begin(), along_row.end(), [&chain] (pcl::index_t a, pcl::index_t b) {
+        return chain (a) < chain (b);
+      });
+  const double cut = cutBetweenCopies (positions, [&] (double c) -> std::size_t {
+    return surface ? surfaceGapsAt (c, along_row, chain, *surface) : 0;
+  });
   const auto copy = [&] (pcl::index_t k) {
     return static_cast<long> (std::floor (chain (k) - cut));
   };

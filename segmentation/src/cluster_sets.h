@@ -19,6 +19,15 @@ sharedKeypoints (const pcl::Indices& a, const pcl::Indices& b)
   return shared;
 }
 
+/** \brief The keypoints of either of two sorted index lists, sorted, each once. */
+inline pcl::Indices
+allKeypoints (const pcl::Indices& a, const pcl::Indices& b)
+{
+  pcl::Indices all;
+  std::set_union (a.begin(), a.end(), b.begin(), b.end(), std::back_inserter (all));
+  return all;
+}
+
 /** \brief The source of a triplet's keypoint pair as its cluster uses it (reversed or not). */
 inline pcl::index_t
 sourceOf (const pcl::Correspondence& c, bool reversed)

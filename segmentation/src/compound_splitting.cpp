@@ -51,11 +51,6 @@ constexpr int kAnchorWeight = 4;
   */
 constexpr double kMaxAnchorCut = 0.1;
 
-/** Without anchors, the surface between two half-turn copies must fall this far (metres)
-  * behind the segment joining their closest keypoints.
-  */
-constexpr float kMinGapDrop = 0.01f;
-
 /** Planes through the half turn's axis tried, evenly spaced over half a turn. */
 constexpr int kPlaneCandidates = 180;
 
@@ -124,7 +119,7 @@ gapBetweenSides (const pcl::Indices& points,
         }
       }
   return pair.first >= 0 &&
-         surfaceDropsBetween (surface, pair.first, pair.second, kMinGapDrop);
+         surfaceDropsBetween (surface, pair.first, pair.second, kMinSurfaceGapDrop);
 }
 
 /** Side (+1 / -1, 0 on the plane) of every keypoint of a half-turn cluster; empty when

@@ -114,17 +114,24 @@ isMultipleOf (const Eigen::Vector3f& step, const Eigen::Vector3f& row)
   * its own step, copies k and k + 1 fall into one unit, and its parts link pairs of copies). A
   * multiple that is no chain (copies 1, 2 -> 3, 4) stays whole here: its point sets straddle the
   * neighbour pairs, and splitCompounds() splits it by keypoint membership, which does not need an
-  * empty gap between touching copies as the numbering does.
+  * empty gap between touching copies as the numbering does. `surface` (or null) lets the cuts
+  * prefer gaps in the surface.
   */
 void
 splitChains (const TripletMatches& triplets,
              const KeypointCloud& keypoints,
+             const KeypointSurface* surface,
              TripletClusters& clusters)
 {
   std::vector<std::vector<std::vector<std::size_t>>> parts (clusters.size());
   std::vector<Eigen::Vector3f> rows;
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    parts[c] = splitChainCluster (clusters[c], triplets, keypoints, kMaxChainRotation);
+    parts[c] = splitChainCluster (clusters[c],
+                                  triplets,
+                                  keypoints,
+                                  kMaxChainRotation,
+                                  Eigen::Vector3f::Zero(),
+                                  surface);
     if (parts[c].size() > 1)
       rows.push_back (chainStep (clusters[c], keypoints));
   }
@@ -136,7 +143,7 @@ splitChains (const TripletMatches& triplets,
         });
     if (parts[c].size() > 1 && found != rows.end())
       parts[c] = splitChainCluster (
-          clusters[c], triplets, keypoints, kMaxChainRotation, *found);
+          clusters[c], triplets, keypoints, kMaxChainRotation, *found, surface);
   }
   TripletClusters split;
   split.reserve (clusters.size());
@@ -503,7 +510,8 @@ TransformationSpaceClustering::clusterCorrespondences (
     std::sort (clusters.begin(), clusters.end(), larger);
   }
   if (split_chains_ && one_frame) {
-    splitChains (used_triplets_, *input_, clusters);
+    splitChains (
+        used_triplets_, *input_, surface_.organized ? &surface_ : nullptr, clusters);
     std::sort (clusters.begin(), clusters.end(), larger);
   }
   if (split_compounds_ && one_frame) {

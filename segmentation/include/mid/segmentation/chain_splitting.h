@@ -3,6 +3,7 @@
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/triplet_cluster.h>
 #include <mid/registration/triplet_match.h>
+#include <mid/segmentation/surface_gap.h>
 
 #include <Eigen/Core>
 
@@ -27,8 +28,12 @@ namespace mid {
   * than a unit of s. A cut c numbers the copies (point x lies on copy floor(s(x) - c)); a cut
   * through the objects puts the sources, and the targets moved back by the stride, on more
   * copies than a cut between copies, so the cut is the middle of the empty interval of s
-  * modulo 1 that puts them on the fewest copies, the largest such interval on a tie (the
-  * largest empty interval alone may lie inside the print of every copy when copies touch).
+  * modulo 1 that puts them on the fewest copies (the largest empty interval alone may lie
+  * inside the print of every copy when copies touch). Of such intervals, the one across which
+  * the surface shows a gap between the cluster's keypoints next to the cut on either side
+  * (surfaceDropsBetween(): the floor or the background seen between copies) at most places
+  * goes first, when the surface is given, then the largest (a print with an empty band wider
+  * than the gap between the copies would otherwise be cut).
   * When the span of the sources is the only evidence, they must lie on consecutive copies;
   * otherwise (two pairs of touching copies far apart, or a row whose middle link is missing)
   * the cluster is left whole, for the compound splitting. A triplet whose three source points
@@ -42,6 +47,8 @@ namespace mid {
   * a multiple n (|n| >= 2: copies k -> k + n forming a chain of their own): copies are then
   * numbered along row_step, the test for chain evidence is skipped, and a triplet goes to part
   * k when its sources lie on copy k and its targets on copy k + n
+  * \param[in] surface the organized frame and the keypoints' pixels (a valid KeypointSurface,
+  * not checked), or null: the cut is then chosen without looking at the surface
   * \return per part, positions in cluster.triplets of its member triplets, parts in copy order;
   * a single part holding every triplet when the cluster is not a chain (with row_step: a
   * single part may also be the triplets that link one pair of copies, the others dropped)
@@ -51,7 +58,8 @@ splitChainCluster (const TripletCluster& cluster,
                    const TripletMatches& triplets,
                    const KeypointCloud& keypoints,
                    float max_rotation,
-                   const Eigen::Vector3f& row_step = Eigen::Vector3f::Zero());
+                   const Eigen::Vector3f& row_step = Eigen::Vector3f::Zero(),
+                   const KeypointSurface* surface = nullptr);
 
 /** \brief The step of a cluster along a row: the displacement its pose gives the centroid of
   * its source keypoints (for a pure translation, the translation).

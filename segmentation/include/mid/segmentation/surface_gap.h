@@ -61,6 +61,13 @@ surfacePinhole (const KeypointSurface& surface, FramePinhole& pinhole);
 bool
 isValidKeypointSurface (const KeypointSurface& surface, std::size_t keypoints);
 
+/** \brief How far (metres) the surface between two keypoints must fall behind the segment
+  * joining them (surfaceDropsBetween()) for the steps that look for a gap between two copies
+  * (the compound and chain splitting): the floor or the background seen between them, not the
+  * depth noise of one face.
+  */
+constexpr float kMinSurfaceGapDrop = 0.01f;
+
 /** \brief True if the surface seen between two keypoints falls behind the straight segment
   * joining them by more than `min_drop` somewhere: the two lie on different objects, with
   * something farther from the camera (the floor, the background) between them.
