@@ -14,6 +14,7 @@
 #include <mid/segmentation/appearance_model_splitter.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -767,12 +768,24 @@ refineOnSurface (const DiscoveryParameters& p,
   return true;
 }
 
-/** Give a step that measures boxes on the table the frame's keypoints and their pixels in the
-  * organized frame (which `frame` must hold).
+/** The frame's support plane, fitted once for the steps that measure boxes on the table (the
+  * first that needs it fits it; zero when the frame has none).
+  */
+struct FramePlane
+{
+  bool fitted = false;
+  Eigen::Vector4f plane = Eigen::Vector4f::Zero();
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+/** Give a step that measures boxes on the table the frame's keypoints, their pixels in the
+  * organized frame (which `frame` must hold) and the frame's support plane (fitted here on first
+  * use).
   */
 void
 setUpPlaneMeasurement (const KeypointSurface& frame,
                        const DiscoveryResult& result,
+                       FramePlane& plane,
                        SupportPlaneMeasurement& measurement)
 {
   KeypointSurface keypoint_surface;
@@ -781,6 +794,14 @@ setUpPlaneMeasurement (const KeypointSurface& frame,
     keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
   measurement.setInputKeypoints (result.keypoints);
   measurement.setKeypointSurface (keypoint_surface);
+  if (!plane.fitted) {
+    fitSupportPlane (*frame.organized,
+                     measurement.getPlaneTolerance(),
+                     kMinSupportPlaneShare,
+                     plane.plane);
+    plane.fitted = true;
+  }
+  measurement.setSupportPlane (plane.plane);
 }
 
 /** setUpPlaneMeasurement(), and the size tolerances of a step that compares box sizes. */
@@ -788,9 +809,10 @@ void
 setUpBoxMeasurement (const DiscoveryParameters& p,
                      const KeypointSurface& frame,
                      const DiscoveryResult& result,
+                     FramePlane& plane,
                      ModelSizeMeasurement& measurement)
 {
-  setUpPlaneMeasurement (frame, result, measurement);
+  setUpPlaneMeasurement (frame, result, plane, measurement);
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
 }
 
@@ -800,12 +822,13 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
 bool
 mergeBySize (const DiscoveryParameters& p,
              const KeypointSurface& frame,
+             FramePlane& plane,
              DiscoveryResult& result)
 {
   pcl::StopWatch watch;
   if (p.merge_by_size && frame.organized) {
     ModelSizeMerger merger;
-    setUpBoxMeasurement (p, frame, result, merger);
+    setUpBoxMeasurement (p, frame, result, plane, merger);
     merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
     if (!merger.merge (result.models))
       return false;
@@ -821,12 +844,13 @@ mergeBySize (const DiscoveryParameters& p,
 bool
 removeRepeatedPrints (const DiscoveryParameters& p,
                       const KeypointSurface& frame,
+                      FramePlane& plane,
                       DiscoveryResult& result)
 {
   pcl::StopWatch watch;
   if (p.remove_repeated_prints && frame.organized) {
     RepeatedPrintFilter filter;
-    setUpPlaneMeasurement (frame, result, filter);
+    setUpPlaneMeasurement (frame, result, plane, filter);
     filter.setMaxRotation (p.repeated_print_max_rotation);
     filter.setMaxShiftRatio (p.repeated_print_max_shift);
     filter.setMaxShiftAlongWidth (p.repeated_print_max_shift_along);
@@ -847,12 +871,13 @@ removeRepeatedPrints (const DiscoveryParameters& p,
 bool
 searchBySize (const DiscoveryParameters& p,
               const KeypointSurface& frame,
+              FramePlane& plane,
               DiscoveryResult& result)
 {
   pcl::StopWatch watch;
   if (p.size_search && frame.organized) {
     SizeInstanceSearch search;
-    setUpBoxMeasurement (p, frame, result, search);
+    setUpBoxMeasurement (p, frame, result, plane, search);
     search.setInputDescriptors (result.descriptors);
     search.setMinAgreeing (p.size_search_min_agreeing);
     search.setMinKeypoints (p.size_search_min_keypoints);
@@ -999,9 +1024,11 @@ discoverFromKeypoints (const DiscoveryParameters& p,
 {
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
+  FramePlane plane;
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
-      mergeBySize (p, frame, result) && removeRepeatedPrints (p, frame, result) &&
-      searchBySize (p, frame, result) && pruneObservations (p, result)) {
+      mergeBySize (p, frame, plane, result) &&
+      removeRepeatedPrints (p, frame, plane, result) &&
+      searchBySize (p, frame, plane, result) && pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)
       centerModelFrame (model);

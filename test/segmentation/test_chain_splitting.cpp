@@ -215,13 +215,14 @@ TEST (ChainSplitting, CutsWhereTheSurfaceShowsAGapNotInsideAWiderEmptyBand)
                              0.027f,
                              0.03f};
   std::vector<Eigen::Vector3f> object;
+  object.reserve (kPoints);
   for (int i = 0; i < kPoints; ++i)
     object.emplace_back (
         xs[i], 0.0f, 0.018f * std::sin (1.7f * static_cast<float> (i)));
   const Eigen::Vector3f origin (-0.15f, 0.3f, 0.9f);
   const Eigen::Vector3f step (0.07f, 0.0f, 0.0f);
   Row row (5, step, 0.0f, false, object, origin);
-  const auto left_half = [&row] (pcl::Indices& indices, int copy) {
+  const auto left_half = [] (pcl::Indices& indices, int copy) {
     indices.erase (std::remove_if (indices.begin(),
                                    indices.end(),
                                    [copy] (pcl::index_t k) {

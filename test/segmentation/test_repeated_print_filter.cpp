@@ -2,6 +2,7 @@
 // model that lie on one box, shifted along a print that repeats on it, against true copies.
 #include "resting_boxes.h"
 
+#include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/repeated_print_filter.h>
 
 #include <gtest/gtest.h>
@@ -135,6 +136,35 @@ TEST (RepeatedPrintFilter, RemovesTheRepeatOnOneBoxAndKeepsTheCopy)
   EXPECT_EQ (scene.boxOf (instances[1].keypoints), 1);
 }
 
+TEST (RepeatedPrintFilter, MeasuresOnASupportPlaneGivenInsteadOfFittingOne)
+{
+  // The plane the pipeline fits once for its three box steps: the same removal as the
+  // filter's own fit; a zero plane (a frame without one) measures nothing; reset, it fits again.
+  const Boxes scene (twoApart());
+  const mid::ObjectModel model =
+      modelWithRepeat (scene, repeatOn (scene, 0, 0.02f, 3.0f), true);
+  Eigen::Vector4f plane;
+  ASSERT_TRUE (mid::fitSupportPlane (*scene.surface.organized,
+                                     mid::kDefaultPlaneTolerance,
+                                     mid::kMinSupportPlaneShare,
+                                     plane));
+  mid::RepeatedPrintFilter filter = filterIn (scene);
+  filter.setSupportPlane (plane);
+  EXPECT_EQ (filter.getSupportPlane(), plane);
+  const auto given = filtered (filter, model);
+  EXPECT_EQ (given.second, 1u);
+  EXPECT_EQ (given.first.size(), 2u);
+
+  filter.setSupportPlane (Eigen::Vector4f::Zero());
+  const auto none = filtered (filter, model);
+  EXPECT_EQ (none.second, 0u);
+  EXPECT_EQ (none.first.size(), model.instances.size());
+
+  filter.resetSupportPlane();
+  EXPECT_TRUE (filter.getSupportPlane().isZero());
+  EXPECT_EQ (filtered (filter, model).second, 1u);
+}
+
 TEST (RepeatedPrintFilter, RemovesAnInstanceAtTheSamePlace)
 {
   // A second instance of box 0 at its very pose (no shift, so no direction to measure the
@@ -255,6 +285,13 @@ TEST (RepeatedPrintFilter, RefusesBadInputAndLeavesTheModels)
   mid::RepeatedPrintFilter step = filterIn (scene);
   step.setMaxStep (0.0f);
   refused (step);
+  mid::RepeatedPrintFilter tilted = filterIn (scene);
+  tilted.setSupportPlane (Eigen::Vector4f (0.0f, 2.0f, 0.0f, 1.0f)); // no unit normal
+  refused (tilted);
+  mid::RepeatedPrintFilter broken = filterIn (scene);
+  broken.setSupportPlane (
+      Eigen::Vector4f (0.0f, 1.0f, 0.0f, std::numeric_limits<float>::quiet_NaN()));
+  refused (broken);
 
   mid::ObjectModels outside = {model};
   outside[0].instances[1].keypoints.push_back (

@@ -15,10 +15,13 @@ namespace mid {
   */
 constexpr float kMinSupportPlaneShare = 0.2f;
 
+/** \brief Default largest distance of a point on the support plane from it (metres). */
+constexpr float kDefaultPlaneTolerance = 0.01f;
+
 /** \brief What the steps that measure the boxes of objects on the support plane share
   * (ModelSizeMeasurement's steps, RepeatedPrintFilter): the frame's keypoints and keypoint
-  * surface and how the surfaces grow (growInstanceSurfaces()); set/get pairs and the shared
-  * checks.
+  * surface, how the surfaces grow (growInstanceSurfaces()) and the support plane; set/get
+  * pairs and the shared checks. Only the steps derived from it are made, copied and destroyed.
   */
 class SupportPlaneMeasurement
 {
@@ -87,8 +90,8 @@ public:
   }
   ///@}
 
-  /** \brief Largest distance of a point on the support plane from it (metres, default 0.01,
-    * > 0).
+  /** \brief Largest distance of a point on the support plane from it (metres, default
+    * kDefaultPlaneTolerance, > 0).
     */
   ///@{
   void
@@ -103,25 +106,66 @@ public:
   }
   ///@}
 
+  /** \brief The frame's support plane, for a caller that runs several steps on one frame and
+    * fits it once (fitSupportPlane() with the step's plane tolerance and
+    * kMinSupportPlaneShare): (n, d) with a unit normal n, or zero when the frame has none (the
+    * step then measures nothing). Unset (the default, or after resetSupportPlane()), the step
+    * fits the plane itself.
+    */
+  ///@{
+  void
+  setSupportPlane (const Eigen::Vector4f& plane)
+  {
+    support_plane_ = plane;
+    has_support_plane_ = true;
+  }
+  /** \return the plane given, zero if none was */
+  const Eigen::Vector4f&
+  getSupportPlane () const
+  {
+    return support_plane_;
+  }
+  void
+  resetSupportPlane ()
+  {
+    support_plane_.setZero();
+    has_support_plane_ = false;
+  }
+  ///@}
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+
 protected:
-  /** \brief What is wrong with the keypoints, the keypoint surface, the parameters above or
+  SupportPlaneMeasurement() = default;
+  SupportPlaneMeasurement (const SupportPlaneMeasurement&) = default;
+  SupportPlaneMeasurement (SupportPlaneMeasurement&&) = default;
+  SupportPlaneMeasurement&
+  operator= (const SupportPlaneMeasurement&) = default;
+  SupportPlaneMeasurement&
+  operator= (SupportPlaneMeasurement&&) = default;
+  ~SupportPlaneMeasurement() = default;
+
+  /** \brief What is wrong with the keypoints, the keypoint surface, the parameters above (a
+    * support plane given that is neither zero nor a finite plane with a unit normal) or
     * `models` (an observation outside the keypoints); empty if nothing.
     */
   std::string
   planeMeasurementProblem (const ObjectModels& models) const;
 
-  /** \brief Fit the frame's support plane (fitSupportPlane(), with the plane tolerance and
-    * kMinSupportPlaneShare).
-    * \return false if no plane holds that share of the frame
+  /** \brief The frame's support plane: the one given (setSupportPlane()), else fitted
+    * (fitSupportPlane(), with the plane tolerance and kMinSupportPlaneShare).
+    * \return false if the plane given is zero, or no plane holds that share of the frame
     */
   bool
   fitPlane (Eigen::Vector4f& plane) const;
 
-  KeypointCloud::ConstPtr keypoints_; ///< see setInputKeypoints()
-  KeypointSurface surface_;           ///< see setKeypointSurface()
-  float max_step_ = 0.008f;           ///< see setMaxStep()
-  float max_radius_ = 0.3f;           ///< see setMaxRadius()
-  float plane_tolerance_ = 0.01f;     ///< see setPlaneTolerance()
+  KeypointCloud::ConstPtr keypoints_;              ///< see setInputKeypoints()
+  KeypointSurface surface_;                        ///< see setKeypointSurface()
+  float max_step_ = 0.008f;                        ///< see setMaxStep()
+  float max_radius_ = 0.3f;                        ///< see setMaxRadius()
+  float plane_tolerance_ = kDefaultPlaneTolerance; ///< see setPlaneTolerance()
+  Eigen::Vector4f support_plane_ = Eigen::Vector4f::Zero(); ///< see setSupportPlane()
+  bool has_support_plane_ = false;                          ///< see setSupportPlane()
 };
 
 } // namespace mid
