@@ -136,6 +136,10 @@ public:
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 
 protected:
+  /** \brief Made, copied, moved and destroyed only as a part of a step derived from it (never
+    * deleted through a pointer to this class, which has no virtual destructor).
+    */
+  ///@{
   SupportPlaneMeasurement() = default;
   SupportPlaneMeasurement (const SupportPlaneMeasurement&) = default;
   SupportPlaneMeasurement (SupportPlaneMeasurement&&) = default;
@@ -144,6 +148,7 @@ protected:
   SupportPlaneMeasurement&
   operator= (SupportPlaneMeasurement&&) = default;
   ~SupportPlaneMeasurement() = default;
+  ///@}
 
   /** \brief What is wrong with the keypoints, the keypoint surface, the parameters above (a
     * support plane given that is neither zero nor a finite plane with a unit normal) or
