@@ -127,6 +127,49 @@ expectCentredModelFrame (const mid::DiscoveryResult& result,
   }
 }
 
+/** `count` boxes of one print (12 x 12 x 4 cm) in a row along the camera's x axis, all turned
+  * alike: the first centred at (first_x, 0, depth), each next one `step` metres further, tilted
+  * by `tilt` degrees about the x axis.
+  */
+std::vector<BoxSpec>
+rowOfBoxes (const char* print,
+            int count,
+            double first_x,
+            double step,
+            double depth,
+            double tilt)
+{
+  std::vector<BoxSpec> row;
+  row.reserve (static_cast<std::size_t> (count));
+  for (int k = 0; k < count; ++k)
+    row.push_back ({print,
+                    {0.12, 0.12, 0.04},
+                    boxPose (first_x + step * k, 0.0, depth, 0.0, tilt)});
+  return row;
+}
+
+/** One model with one instance on each box of the scene, each with at least 90 % of its
+  * keypoints on its box (the paper's scoring), at the boxes' relative poses (2 deg, 5 mm), and
+  * spanning one box (diagonal 0.17 m), not two.
+  */
+void
+expectOneInstancePerBox (const mid::test::RenderedObjectsScene& scene,
+                         const mid::DiscoveryResult& result)
+{
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto& model = result.models.front();
+  const auto boxes = boxesOf (scene, result, model);
+  std::set<int> all;
+  for (int b = 0; b < static_cast<int> (scene.boxes.size()); ++b)
+    all.insert (b);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), all);
+  EXPECT_EQ (boxes.size(), scene.boxes.size());
+  EXPECT_GE (smallestShareOnOneBox (scene, result, model), 0.9);
+  expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
+  expectCentredModelFrame (result, model);
+  EXPECT_LT (model.diameter, 0.18f);
+}
+
 } // namespace
 
 TEST (MultiInstanceDiscovery, FindsThreeCopiesOfOneObjectWithTheirRelativePoses)
@@ -564,20 +607,9 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
 {
   // Four juice boxes side by side, 2 cm apart, all turned alike: neighbours share one relative
   // pose (the paper's "objects placed in regular rows").
-  std::vector<BoxSpec> row;
-  row.reserve (4);
-  for (int k = 0; k < 4; ++k)
-    row.push_back (
-        {kJuice, {0.12, 0.12, 0.04}, boxPose (-0.21 + 0.14 * k, 0.0, 0.80, 0.0, 20.0)});
-  const auto scene = mid::test::renderBoxes (row);
-  const auto result = discover (scene);
-  ASSERT_EQ (result.models.size(), 1u);
-  const auto& model = result.models.front();
-  const auto boxes = boxesOf (scene, result, model);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
-  EXPECT_EQ (boxes.size(), 4u);
-  expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
-  EXPECT_LT (model.diameter, 0.18f); // one box (diagonal 0.17 m), not the row
+  const auto scene =
+      mid::test::renderBoxes (rowOfBoxes (kJuice, 4, -0.21, 0.14, 0.8, 20.0));
+  expectOneInstancePerBox (scene, discover (scene));
 
   // Without the chain and compound splitting and the overlap resolution (the paper's method), the model
   // spans several boxes.
@@ -598,27 +630,13 @@ TEST (MultiInstanceDiscovery, SplitsARowOfCopiesWithOneOrientationIntoItsInstanc
 TEST (MultiInstanceDiscovery,
       KeepsOnlyTheKeypointsOfTheirCopyInARowOfNearlyTouchingCopies)
 {
-  // Five cookie boxes 1 cm apart in a row seen from straight above: clusters that span neighbours
-  // bring keypoints of the next box into an instance. Its pose does not explain them, and
-  // they go: every instance then has at least 90 % of its keypoints on its own box (the
-  // paper's scoring), which without the pruning one instance misses.
-  std::vector<BoxSpec> row;
-  row.reserve (5);
-  for (int k = 0; k < 5; ++k)
-    row.push_back ({kCookies,
-                    {0.12, 0.12, 0.04},
-                    boxPose (-0.25 + 0.13 * k, 0.0, 0.85, 0.0, 0.0)});
-  const auto scene = mid::test::renderBoxes (row, 0.9);
-  const auto result = discover (scene);
-  ASSERT_EQ (result.models.size(), 1u);
-  const auto& model = result.models.front();
-  const auto boxes = boxesOf (scene, result, model);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()),
-             (std::set<int>{0, 1, 2, 3, 4}));
-  EXPECT_EQ (boxes.size(), 5u);
-  EXPECT_GE (smallestShareOnOneBox (scene, result, model), 0.9);
-  expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
-  expectCentredModelFrame (result, model);
+  // Five cookie boxes 1 cm apart in a row seen from straight above: clusters that span
+  // neighbours bring keypoints of the next box into an instance. Its pose does not explain
+  // them, and they go: every instance then has at least 90 % of its keypoints on its own box
+  // (the paper's scoring), which without the pruning one instance misses.
+  const auto scene =
+      mid::test::renderBoxes (rowOfBoxes (kCookies, 5, -0.25, 0.13, 0.85, 0.0), 0.9);
+  expectOneInstancePerBox (scene, discover (scene));
 
   mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> unpruned;
   unpruned.setInputCloud (scene.cloud);
@@ -638,20 +656,7 @@ TEST (MultiInstanceDiscovery, CutsARowAtTheGapsTheTableShowsNotInsideThePrint)
   // edges fill the gap's phase along the row. The chain splitting cuts where the table shows
   // between the boxes (until session 31 it cut inside the print: six instances, two on one
   // box, a model spanning two boxes).
-  std::vector<BoxSpec> row;
-  row.reserve (5);
-  for (int k = 0; k < 5; ++k)
-    row.push_back (
-        {kJuice, {0.12, 0.12, 0.04}, boxPose (-0.25 + 0.13 * k, 0.0, 0.85, 0.0, 0.0)});
-  const auto scene = mid::test::renderBoxes (row, 0.9);
-  const auto result = discover (scene);
-  ASSERT_EQ (result.models.size(), 1u);
-  const auto& model = result.models.front();
-  const auto boxes = boxesOf (scene, result, model);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()),
-             (std::set<int>{0, 1, 2, 3, 4}));
-  EXPECT_EQ (boxes.size(), 5u);
-  EXPECT_GE (smallestShareOnOneBox (scene, result, model), 0.9);
-  expectRelativePosesMatch (scene, model, boxes, 2.0, 0.005);
-  EXPECT_LT (model.diameter, 0.18f); // one box (diagonal 0.17 m), not two
+  const auto scene =
+      mid::test::renderBoxes (rowOfBoxes (kJuice, 5, -0.25, 0.13, 0.85, 0.0), 0.9);
+  expectOneInstancePerBox (scene, discover (scene));
 }
