@@ -795,12 +795,11 @@ setUpPlaneMeasurement (const KeypointSurface& frame,
   measurement.setInputKeypoints (result.keypoints);
   measurement.setKeypointSurface (keypoint_surface);
   if (!plane.fitted) {
-    fitSupportPlane (*frame.organized,
-                     measurement.getPlaneTolerance(),
-                     kMinSupportPlaneShare,
-                     plane.plane);
+    fitSupportPlane (
+        *frame.organized, kDefaultPlaneTolerance, kMinSupportPlaneShare, plane.plane);
     plane.fitted = true;
   }
+  measurement.setPlaneTolerance (kDefaultPlaneTolerance);
   measurement.setSupportPlane (plane.plane);
 }
 

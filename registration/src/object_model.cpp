@@ -9,6 +9,36 @@
 
 namespace mid {
 
+std::string
+observationProblem (const ObjectModel& model, std::size_t keypoints)
+{
+  for (const auto& instance : model.instances) {
+    if (instance.keypoints.size() != instance.landmarks.size())
+      return "an instance's keypoints and landmarks differ in number";
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
+      if (instance.keypoints[o] < 0 ||
+          static_cast<std::size_t> (instance.keypoints[o]) >= keypoints ||
+          instance.landmarks[o] < 0 ||
+          static_cast<std::size_t> (instance.landmarks[o]) >= model.landmarks.size())
+        return "an observation lies outside the keypoints or the landmarks";
+  }
+  return {};
+}
+
+std::string
+descriptorProblem (const ObjectModel& model)
+{
+  if (model.descriptors.size() != model.descriptor_landmarks.size() ||
+      !std::all_of (model.descriptor_landmarks.begin(),
+                    model.descriptor_landmarks.end(),
+                    [&model] (int l) {
+                      return l >= 0 &&
+                             static_cast<std::size_t> (l) < model.landmarks.size();
+                    }))
+    return "every model descriptor must describe a landmark of the model";
+  return {};
+}
+
 void
 updateInstanceError (const ObjectModel& model,
                      const KeypointCloud& keypoints,

@@ -3,34 +3,12 @@
 
 #include <pcl/console/print.h>
 
+#include <string>
 #include <vector>
 
 namespace mid {
 
 namespace {
-
-/** True if every observation of the model's instances names an existing keypoint and
-  * landmark, each instance has as many landmarks as keypoints, and every descriptor names an
-  * existing landmark.
-  */
-bool
-observationsExist (const KeypointCloud& keypoints, const ObjectModel& model)
-{
-  for (const auto& instance : model.instances) {
-    if (instance.keypoints.size() != instance.landmarks.size())
-      return false;
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
-      if (instance.keypoints[o] < 0 ||
-          static_cast<std::size_t> (instance.keypoints[o]) >= keypoints.size() ||
-          instance.landmarks[o] < 0 ||
-          static_cast<std::size_t> (instance.landmarks[o]) >= model.landmarks.size())
-        return false;
-  }
-  for (const int l : model.descriptor_landmarks)
-    if (l < 0 || static_cast<std::size_t> (l) >= model.landmarks.size())
-      return false;
-  return model.descriptor_landmarks.size() == model.descriptors.size();
-}
 
 /** How many observations each landmark has among the model's instances. */
 std::vector<std::size_t>
@@ -91,10 +69,12 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
         static_cast<double> (box_margin));
     return false;
   }
-  if (!observationsExist (keypoints, model)) {
-    PCL_ERROR ("[mid::pruneUnexplainedObservations] An observation names a keypoint or "
-               "landmark that does not exist, or the descriptors do not match their "
-               "landmark list.\n");
+  std::string problem = observationProblem (model, keypoints.size());
+  if (problem.empty())
+    problem = descriptorProblem (model);
+  if (!problem.empty()) {
+    PCL_ERROR ("[mid::pruneUnexplainedObservations] The model is not usable: %s.\n",
+               problem.c_str());
     return false;
   }
   const LandmarkBox box = computeLandmarkBox (model);
@@ -115,7 +95,10 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
       const Eigen::Vector3f landmark =
           model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
               .getVector3fMap();
-      const bool in_box = !box.valid || box.distanceTo (local) <= box_margin;
+      // A landmark that only this instance observes shows its own surface (a face no other
+      // copy shows, as a copy found by its size has): the box of the others does not judge it.
+      const bool own = before[static_cast<std::size_t> (instance.landmarks[o])] == 1;
+      const bool in_box = own || !box.valid || box.distanceTo (local) <= box_margin;
       if ((local - landmark).norm() <= max_residual && in_box) {
         kept.keypoints.push_back (instance.keypoints[o]);
         kept.landmarks.push_back (instance.landmarks[o]);

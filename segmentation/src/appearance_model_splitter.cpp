@@ -80,15 +80,7 @@ AppearanceModelSplitter::inputProblem (const ObjectModel& model) const
       return "an instance observes a keypoint without a pixel or a landmark the model "
              "does not have";
   }
-  if (model.descriptors.size() != model.descriptor_landmarks.size() ||
-      !std::all_of (model.descriptor_landmarks.begin(),
-                    model.descriptor_landmarks.end(),
-                    [&model] (int l) {
-                      return l >= 0 &&
-                             static_cast<std::size_t> (l) < model.landmarks.size();
-                    }))
-    return "every model descriptor must describe a landmark of the model";
-  return {};
+  return descriptorProblem (model);
 }
 
 bool

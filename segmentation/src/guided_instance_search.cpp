@@ -302,11 +302,9 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
   };
   if (!std::all_of (candidates_.begin(), candidates_.end(), isKeypoint))
     return "a candidate is not a keypoint";
-  if (model.descriptors.size() != model.descriptor_landmarks.size() ||
-      !std::all_of (model.descriptor_landmarks.begin(),
-                    model.descriptor_landmarks.end(),
-                    isLandmark))
-    return "every model descriptor must describe a landmark of the model";
+  const std::string descriptors = descriptorProblem (model);
+  if (!descriptors.empty())
+    return descriptors;
   const auto observes = [&] (const ModelInstance& instance) {
     return instance.keypoints.size() == instance.landmarks.size() &&
            std::all_of (

@@ -388,19 +388,10 @@ SurfacePoseRefinement::inputProblem (const ObjectModel& model) const
     return "the surface weight must be finite and >= 0";
   if (max_iterations_ < 1)
     return "the iterations must be at least 1";
-  for (const auto& instance : model.instances) {
-    if (instance.keypoints.size() != instance.landmarks.size())
-      return "an instance's keypoints and landmarks differ in number";
+  for (const auto& instance : model.instances)
     if (!instance.pose.allFinite())
       return "an instance's pose is not finite";
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
-      if (instance.keypoints[o] < 0 ||
-          static_cast<std::size_t> (instance.keypoints[o]) >= keypoints_->size() ||
-          instance.landmarks[o] < 0 ||
-          static_cast<std::size_t> (instance.landmarks[o]) >= model.landmarks.size())
-        return "an observation lies outside the keypoints or the landmarks";
-  }
-  return {};
+  return observationProblem (model, keypoints_->size());
 }
 
 bool

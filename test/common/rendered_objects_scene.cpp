@@ -68,7 +68,8 @@ renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth)
 
 int
 boxUnderKeypoints (const RenderedObjectsScene& scene,
-                   const std::vector<Eigen::Vector2f>& pixels)
+                   const std::vector<Eigen::Vector2f>& pixels,
+                   double* share)
 {
   std::map<int, int> votes;
   for (const auto& p : pixels) {
@@ -84,7 +85,12 @@ boxUnderKeypoints (const RenderedObjectsScene& scene,
       best = box;
       count = n;
     }
-  return 2 * count > static_cast<int> (pixels.size()) ? best : -1;
+  const int box = 2 * count > static_cast<int> (pixels.size()) ? best : -1;
+  if (share != nullptr)
+    *share = box >= 0
+                 ? static_cast<double> (count) / static_cast<double> (pixels.size())
+                 : 0.0;
+  return box;
 }
 
 namespace {

@@ -47,11 +47,13 @@ RenderedObjectsScene
 renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth = 0.0);
 
 /** \brief The box (index into the scene's boxes) most of the given image keypoints lie on, or -1
-  * if most lie on the background.
+  * if most lie on the background (or outside the image), and, when `share` is given, the share
+  * of the keypoints on that box (0 for -1).
   */
 int
 boxUnderKeypoints (const RenderedObjectsScene& scene,
-                   const std::vector<Eigen::Vector2f>& pixels);
+                   const std::vector<Eigen::Vector2f>& pixels,
+                   double* share = nullptr);
 
 /** \brief Recolour box `box`'s pixels of `cloud` (a colour cloud of the scene's frame) blue,
   * keeping each pixel's grey level (0.299 r + 0.587 g + 0.114 b, up to rounding): the same

@@ -23,16 +23,9 @@ constexpr float kOffTheBox = 0.05f;
 constexpr float kResidual = 0.005f;
 constexpr float kMargin = 0.02f;
 
-/** A model and the keypoints its instances observe:
-  * - landmarks 0..188: a 21 x 9 grid over a 100 x 40 mm rectangle (z = 0), one descriptor each;
-  * - landmark 189 ("stray"): kOffTheBox beyond the rectangle's end, observed at its place by
-  *   instance 1 only (a keypoint of a neighbouring copy);
-  * - landmark 190 ("unseen"): inside the rectangle, observed by no instance;
-  * - instance 0 observes the grid exactly; instance 1 observes it exactly too, except landmark
-  *   7, which it observes 20 mm away from where its pose puts it (along the grid, inside the
-  *   box); instance 2 observes the grid 30 mm above it everywhere (a pose that rests on other
-  *   evidence).
-  */
+/** Landmark indices of the scene below. */
+constexpr int kStray = 0, kFirstOnGrid = 1, kOnGrid = 189, kOwn = 190, kUnseen = 191;
+
 /** Each landmark and keypoint carries in its curvature field the index of the landmark it was
   * made as (and each descriptor in its first bin), so that renumbering can be checked.
   */
@@ -69,10 +62,26 @@ observe (PruningScene& scene,
   scene.keypoints.push_back (pointAt (camera, landmark));
 }
 
+/** A model and the keypoints its instances observe:
+  * - landmark 0 ("stray"): kOffTheBox beyond the grid's end, observed at its place by
+  *   instances 0 and 1 (a keypoint of a neighbouring copy that a cluster spanning two copies
+  *   brought into both); first, so that removing it renumbers every other landmark;
+  * - landmarks 1..189: a 21 x 9 grid over a 100 x 40 mm rectangle (z = 0);
+  * - landmark 190 ("own"): 30 mm beyond the grid's long side (35 mm outside the box),
+  *   observed at its place by instance 1 alone (a face only that copy shows);
+  * - landmark 191 ("unseen"): inside the rectangle, observed by no instance;
+  * - one descriptor per landmark;
+  * - instance 0 observes the grid exactly; instance 1 too, except landmark 8, which it
+  *   observes 20 mm away from where its pose puts it (along the grid, inside the box);
+  *   instance 2 observes the grid 30 mm above it everywhere (a pose that rests on other
+  *   evidence).
+  */
 PruningScene
 pruningScene ()
 {
   PruningScene scene;
+  scene.model.landmarks.push_back (
+      pointAt (Eigen::Vector3f (0.05f + kOffTheBox, 0.0f, 0.0f), kStray));
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 8; ++j)
       scene.model.landmarks.push_back (
@@ -80,11 +89,9 @@ pruningScene ()
                                     -0.02f + 0.005f * static_cast<float> (j),
                                     0.0f),
                    static_cast<int> (scene.model.landmarks.size())));
-  const int grid = static_cast<int> (scene.model.landmarks.size());
+  scene.model.landmarks.push_back (pointAt (Eigen::Vector3f (0.0f, 0.05f, 0.0f), kOwn));
   scene.model.landmarks.push_back (
-      pointAt (Eigen::Vector3f (0.05f + kOffTheBox, 0.0f, 0.0f), grid));
-  scene.model.landmarks.push_back (
-      pointAt (Eigen::Vector3f (0.0f, 0.01f, 0.0f), grid + 1));
+      pointAt (Eigen::Vector3f (0.0f, 0.01f, 0.0f), kUnseen));
   for (std::size_t l = 0; l < scene.model.landmarks.size(); ++l) {
     mid::SIFTDescriptor descriptor;
     std::fill (
@@ -104,12 +111,14 @@ pruningScene ()
   }
   const Eigen::Vector3f along (0.02f, 0.0f, 0.0f);
   const Eigen::Vector3f above (0.0f, 0.0f, 0.03f);
-  for (int l = 0; l < grid; ++l) {
+  for (int l = kFirstOnGrid; l < kFirstOnGrid + kOnGrid; ++l) {
     observe (scene, 0, l);
-    observe (scene, 1, l, l == 7 ? along : Eigen::Vector3f::Zero());
+    observe (scene, 1, l, l == 8 ? along : Eigen::Vector3f::Zero());
     observe (scene, 2, l, above);
   }
-  observe (scene, 1, grid);
+  observe (scene, 0, kStray);
+  observe (scene, 1, kStray);
+  observe (scene, 1, kOwn);
   mid::updateModelDiameter (scene.model);
   return scene;
 }
@@ -119,27 +128,31 @@ pruningScene ()
 TEST (ObservationPruning, DropsWhatThePoseDoesNotExplainAndTheLandmarksOnlyThatHeld)
 {
   PruningScene scene = pruningScene();
-  const auto grid = static_cast<std::size_t> (189);
   std::size_t dropped = 0;
   ASSERT_TRUE (mid::pruneUnexplainedObservations (
       scene.keypoints, kResidual, kMargin, scene.model, dropped));
-  // Instance 1's observation of landmark 7 (20 mm off) and of the stray landmark (55 mm
-  // outside the box); instance 2, which explains none of its own, keeps them all; the grid's
-  // corners, just outside the trimmed box, stay.
-  EXPECT_EQ (dropped, 2u);
+  // Both observations of the stray landmark (55 mm outside the box) and instance 1's of
+  // landmark 8 (20 mm off); instance 1's own landmark stays, however far outside the box;
+  // instance 2, which explains none of its observations, keeps them all; the grid's corners,
+  // just outside the trimmed box, stay.
+  EXPECT_EQ (dropped, 3u);
   const auto& model = scene.model;
   ASSERT_EQ (model.instances.size(), 3u);
+  const auto grid = static_cast<std::size_t> (kOnGrid);
   EXPECT_EQ (model.instances[0].keypoints.size(), grid);
-  EXPECT_EQ (model.instances[1].keypoints.size(), grid - 1);
+  EXPECT_EQ (model.instances[1].keypoints.size(), grid);
   EXPECT_EQ (model.instances[2].keypoints.size(), grid);
+  EXPECT_NEAR (model.instances[0].rms_error, 0.0f, 1e-5f);
   EXPECT_NEAR (model.instances[1].rms_error, 0.0f, 1e-5f);
 
-  // The stray landmark lost its only observation and goes with its descriptor; landmark 7
-  // (still observed by instances 0 and 2) and the unseen landmark stay.
-  ASSERT_EQ (model.landmarks.size(), grid + 1);
-  ASSERT_EQ (model.descriptors.size(), grid + 1);
-  ASSERT_EQ (model.descriptor_landmarks.size(), grid + 1);
-  EXPECT_FLOAT_EQ (model.landmarks.back().curvature, 190.0f);
+  // The stray landmark lost every observation and goes with its descriptor; landmark 8
+  // (still observed by instances 0 and 2), the own and the unseen landmarks stay, every one
+  // renumbered.
+  ASSERT_EQ (model.landmarks.size(), 191u);
+  ASSERT_EQ (model.descriptors.size(), 191u);
+  ASSERT_EQ (model.descriptor_landmarks.size(), 191u);
+  EXPECT_FLOAT_EQ (model.landmarks.front().curvature, 1.0f);
+  EXPECT_FLOAT_EQ (model.landmarks.back().curvature, static_cast<float> (kUnseen));
   for (std::size_t d = 0; d < model.descriptors.size(); ++d)
     EXPECT_FLOAT_EQ (
         model.landmarks[static_cast<std::size_t> (model.descriptor_landmarks[d])]
@@ -164,27 +177,44 @@ TEST (ObservationPruning, DropsWhatThePoseDoesNotExplainAndTheLandmarksOnlyThatH
       }
     }
   }
-  // The diameter is that of the rectangle now, not of the rectangle and the stray landmark.
+  // The diameter is the rectangle's diagonal again (the own landmark lies nearer to every
+  // corner), no longer reaching the stray landmark 0.15 m from the far corner.
+  EXPECT_GT (pruningScene().model.diameter, 0.15f);
   EXPECT_NEAR (model.diameter, std::hypot (0.1f, 0.04f), 1e-4f);
 }
 
 TEST (ObservationPruning, LooserBoundsKeepMore)
 {
-  // A residual bound above 20 mm keeps landmark 7's far observation; a box margin above
-  // 55 mm keeps the stray landmark's.
+  // A residual bound above 20 mm keeps landmark 8's far observation; a box margin above
+  // 55 mm keeps the stray landmark's two.
   PruningScene residual = pruningScene();
   std::size_t dropped = 0;
   ASSERT_TRUE (mid::pruneUnexplainedObservations (
       residual.keypoints, 0.021f, kMargin, residual.model, dropped));
-  EXPECT_EQ (dropped, 1u);
-  EXPECT_EQ (residual.model.instances[1].keypoints.size(), 189u);
-  EXPECT_EQ (residual.model.landmarks.size(), 190u);
+  EXPECT_EQ (dropped, 2u);
+  EXPECT_EQ (residual.model.instances[1].keypoints.size(), 190u);
+  EXPECT_EQ (residual.model.landmarks.size(), 191u);
 
   PruningScene margin = pruningScene();
   ASSERT_TRUE (mid::pruneUnexplainedObservations (
       margin.keypoints, kResidual, kOffTheBox + 0.006f, margin.model, dropped));
   EXPECT_EQ (dropped, 1u);
-  EXPECT_EQ (margin.model.landmarks.size(), 191u);
+  EXPECT_EQ (margin.model.landmarks.size(), 192u);
+}
+
+TEST (ObservationPruning, AnInstanceWithoutAFinitePoseKeepsItsObservations)
+{
+  // Instance 1 has no pose to judge by: it keeps all of its observations, among them the
+  // stray landmark's, which therefore stays; instance 0 still drops its own.
+  PruningScene scene = pruningScene();
+  scene.model.instances[1].pose (0, 3) = std::numeric_limits<float>::quiet_NaN();
+  const pcl::Indices before = scene.model.instances[1].keypoints;
+  std::size_t dropped = 0;
+  ASSERT_TRUE (mid::pruneUnexplainedObservations (
+      scene.keypoints, kResidual, kMargin, scene.model, dropped));
+  EXPECT_EQ (dropped, 1u);
+  EXPECT_EQ (scene.model.instances[1].keypoints, before);
+  EXPECT_EQ (scene.model.landmarks.size(), 192u);
 }
 
 TEST (ObservationPruning, RefusesBadBoundsAndObservationsLeavingTheModelAsItWas)

@@ -6,6 +6,7 @@
 #include <Eigen/StdVector>
 #include <pcl/types.h>
 
+#include <string>
 #include <vector>
 
 namespace mid {
@@ -60,6 +61,23 @@ struct ObjectModel
 
 /** \brief Every object discovered in a frame. */
 using ObjectModels = std::vector<ObjectModel>;
+
+/** \brief What is wrong with a model's observations, for the steps that check their input:
+  * an instance with unequal numbers of keypoints and landmarks, or an observation of a
+  * keypoint outside [0, keypoints) or of a landmark the model does not have.
+  * \param[in] model the model
+  * \param[in] keypoints how many keypoints the frame has
+  * \return the problem in words; empty if there is none
+  */
+std::string
+observationProblem (const ObjectModel& model, std::size_t keypoints);
+
+/** \brief What is wrong with a model's descriptors: their number differs from that of
+  * descriptor_landmarks, or one describes a landmark the model does not have.
+  * \return the problem in words; empty if there is none
+  */
+std::string
+descriptorProblem (const ObjectModel& model);
 
 /** \brief Recompute an instance's rms_error from its observations (0 when it has none).
   * \param[in] model the model whose landmarks the instance observes

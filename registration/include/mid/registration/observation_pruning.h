@@ -19,14 +19,16 @@ namespace mid {
   *
   * An observation (keypoint k of an instance at pose T, observing landmark l) is kept when
   * both hold:
-  * - |T^-1 k - l| <= max_residual;
+  * - |T^-1 k - l| <= max_residual (a non-finite keypoint or landmark fails);
   * - T^-1 k lies within box_margin of the model's landmark box (computeLandmarkBox(), taken
-  *   before anything is dropped; with fewer than 3 landmarks there is no box and only the
-  *   residual counts).
+  *   before anything is dropped), or l is observed by this instance alone: such a landmark
+  *   shows the instance's own surface (a face no other copy shows, as a copy found by its
+  *   size may), which the box of the other copies' landmarks does not bound. With fewer than
+  *   3 landmarks there is no box and only the residual counts.
   *
   * An instance that would keep none of its observations, or whose pose is not finite, keeps
   * them all: its pose rests on other evidence (the depth, a box measured on the table). A
-  * landmark whose every observation is dropped is removed with its descriptors (the others
+  * landmark that loses every observation here is removed with its descriptors (the others
   * are renumbered); a landmark that no instance observed before stays. Poses do not change.
   *
   * \param[in] keypoints the frame's keypoints that the observations index (camera frame,
@@ -38,8 +40,10 @@ namespace mid {
   * \param[in,out] model its instances' observations, landmarks and descriptors are pruned,
   * its diameter updated; its frame is not centred again (centerModelFrame())
   * \param[out] dropped how many observations were dropped (0 on failure)
-  * \return false, with a PCL_ERROR and the model unchanged, for a bound out of its range or an
-  * observation whose keypoint or landmark does not exist
+  * \return false, with a PCL_ERROR and the model unchanged, for a bound out of its range, an
+  * observation whose keypoint or landmark does not exist, an instance with unequal numbers of
+  * keypoints and landmarks, or descriptors that do not match their landmark list (in number,
+  * or naming a landmark that does not exist)
   */
 bool
 pruneUnexplainedObservations (const KeypointCloud& keypoints,

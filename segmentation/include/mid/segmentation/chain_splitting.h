@@ -29,10 +29,11 @@ namespace mid {
   * through the objects puts the sources, and the targets moved back by the stride, on more
   * copies than a cut between copies, so the cut is the middle of the empty interval of s
   * modulo 1 that puts them on the fewest copies (the largest empty interval alone may lie
-  * inside the print of every copy when copies touch). Of such intervals, the one across which
-  * the surface shows a gap between the cluster's keypoints next to the cut on either side
-  * (surfaceDropsBetween(): the floor or the background seen between copies) at most places
-  * goes first, when the surface is given, then the largest (a print with an empty band wider
+  * inside the print of every copy when copies touch). Of such intervals, when the surface is
+  * given, the one with the most places where the surface shows a gap between the cluster's
+  * keypoints next to the cut on either side (each within half a step of it;
+  * surfaceDropsBetween(): the floor or the background seen between copies) goes first, then
+  * the largest (a print with an empty band wider
   * than the gap between the copies would otherwise be cut).
   * When the span of the sources is the only evidence, they must lie on consecutive copies;
   * otherwise (two pairs of touching copies far apart, or a row whose middle link is missing)
