@@ -302,7 +302,7 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
   };
   if (!std::all_of (candidates_.begin(), candidates_.end(), isKeypoint))
     return "a candidate is not a keypoint";
-  const std::string descriptors = descriptorProblem (model);
+  std::string descriptors = descriptorProblem (model);
   if (!descriptors.empty())
     return descriptors;
   const auto observes = [&] (const ModelInstance& instance) {
