@@ -255,6 +255,10 @@ printHelp (const char* program)
       "on the\n");
   print_info ("                      depth (the paper's behaviour)\n");
   print_info (
+      "  -no_size_split      keep a model whole whose copies occupy boxes of two sizes "
+      "on\n");
+  print_info ("                      the table (the paper's behaviour)\n");
+  print_info (
       "  -no_size_merge      keep models apart whose copies occupy boxes of one size "
       "on the\n");
   print_info ("                      table (the paper's behaviour)\n");
@@ -323,6 +327,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-surface_dist", 1},
                                       {"-surface_weight", 1},
                                       {"-surface_iterations", 1},
+                                      {"-no_size_split", 0},
                                       {"-no_size_merge", 0},
                                       {"-size_tol", 1},
                                       {"-size_rel_tol", 1},
@@ -428,6 +433,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.patch_discovery = !pcl::console::find_switch (argc, argv, "-no_patches");
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
+  p.split_by_size = !pcl::console::find_switch (argc, argv, "-no_size_split");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
   p.remove_repeated_prints =
       !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");

@@ -17,6 +17,7 @@
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_size_merger.h>
+#include <mid/segmentation/model_size_splitter.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/repeated_print_filter.h>
 #include <mid/segmentation/size_instance_search.h>
@@ -815,6 +816,27 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
 }
 
+/** Split the models whose copies occupy boxes of two sizes (DiscoveryParameters::split_by_size),
+  * when the organized frame is known; times the "size_split" stage either way.
+  */
+bool
+splitBySize (const DiscoveryParameters& p,
+             const KeypointSurface& frame,
+             FramePlane& plane,
+             DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.split_by_size && frame.organized) {
+    ModelSizeSplitter splitter;
+    setUpBoxMeasurement (p, frame, result, plane, splitter);
+    std::size_t added = 0;
+    if (!splitter.split (result.models, added))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_split", watch.getTime());
+  return true;
+}
+
 /** Merge the models of one size (DiscoveryParameters::merge_by_size), when the organized
   * frame is known; times the "size_merge" stage either way.
   */
@@ -1025,7 +1047,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const KeypointSurface frame = frameSurface (p, organized);
   FramePlane plane;
   if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
-      mergeBySize (p, frame, plane, result) &&
+      splitBySize (p, frame, plane, result) && mergeBySize (p, frame, plane, result) &&
       removeRepeatedPrints (p, frame, plane, result) &&
       searchBySize (p, frame, plane, result) && pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.

@@ -4,15 +4,31 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace mid {
+
+bool
+SizeAgreement::edgesAgree (float x, float y) const
+{
+  return std::abs (x - y) <= std::max (absolute_, relative_ * std::max (x, y));
+}
 
 bool
 SizeAgreement::operator() (const Eigen::Vector3f& a, const Eigen::Vector3f& b) const
 {
   for (int i = 0; i < 3; ++i)
-    if (std::abs (a[i] - b[i]) >
-        std::max (absolute_, relative_ * std::max (a[i], b[i])))
+    if (!edgesAgree (a[i], b[i]))
+      return false;
+  return true;
+}
+
+bool
+SizeAgreement::differOnEveryEdge (const Eigen::Vector3f& a,
+                                  const Eigen::Vector3f& b) const
+{
+  for (int i = 0; i < 3; ++i)
+    if (edgesAgree (a[i], b[i]))
       return false;
   return true;
 }
@@ -31,6 +47,64 @@ instanceSeedPixels (const ObjectModels& models, const pcl::Indices& keypoint_pix
 }
 
 bool
+measureInstanceBoxes (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const Eigen::Vector4f& plane,
+                      const pcl::Indices& keypoint_pixels,
+                      const ObjectModels& models,
+                      float max_step,
+                      float max_radius,
+                      float plane_tolerance,
+                      std::vector<InstanceExtents>& extents)
+{
+  extents.clear();
+  const std::vector<pcl::Indices> seeds = instanceSeedPixels (models, keypoint_pixels);
+  std::vector<pcl::Indices> surfaces;
+  if (!growInstanceSurfaces (
+          organized, plane, seeds, max_step, max_radius, plane_tolerance, surfaces))
+    return false;
+  extents.resize (models.size());
+  for (std::size_t m = 0, id = 0; m < models.size(); ++m) {
+    extents[m].resize (models[m].instances.size());
+    for (auto& extent : extents[m])
+      fitInstanceBox (organized, plane, surfaces[id++], extent);
+  }
+  return true;
+}
+
+std::vector<std::size_t>
+measuredInstances (const InstanceExtents& extents)
+{
+  std::vector<std::size_t> measured;
+  for (std::size_t i = 0; i < extents.size(); ++i)
+    if (!extents[i].surface.empty())
+      measured.push_back (i);
+  return measured;
+}
+
+std::vector<std::size_t>
+largestSizeGroup (const InstanceExtents& extents,
+                  const std::vector<std::size_t>& candidates,
+                  const SizeAgreement& agree,
+                  std::size_t& representative)
+{
+  std::vector<std::size_t> best;
+  std::size_t best_surface = std::numeric_limits<std::size_t>::max();
+  for (const std::size_t a : candidates) {
+    std::vector<std::size_t> group;
+    for (const std::size_t b : candidates)
+      if (agree (extents[a].size, extents[b].size))
+        group.push_back (b);
+    if (group.size() > best.size() ||
+        (group.size() == best.size() && extents[a].surface.size() < best_surface)) {
+      best = std::move (group);
+      best_surface = extents[a].surface.size();
+      representative = a;
+    }
+  }
+  return best;
+}
+
+bool
 measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    const Eigen::Vector4f& plane,
                    const pcl::Indices& keypoint_pixels,
@@ -43,40 +117,27 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    ModelSizes& sizes)
 {
   sizes.clear();
-  const std::vector<pcl::Indices> seeds = instanceSeedPixels (models, keypoint_pixels);
-  std::vector<pcl::Indices> surfaces;
-  if (!growInstanceSurfaces (
-          organized, plane, seeds, max_step, max_radius, plane_tolerance, surfaces))
+  std::vector<InstanceExtents> extents;
+  if (!measureInstanceBoxes (organized,
+                             plane,
+                             keypoint_pixels,
+                             models,
+                             max_step,
+                             max_radius,
+                             plane_tolerance,
+                             extents))
     return false;
-
   sizes.resize (models.size());
-  for (std::size_t m = 0, id = 0; m < models.size(); ++m) {
-    std::vector<InstanceExtent, Eigen::aligned_allocator<InstanceExtent>> extents;
-    std::vector<std::size_t> measured;
-    for (std::size_t i = 0; i < models[m].instances.size(); ++i, ++id) {
-      InstanceExtent extent;
-      if (fitInstanceBox (organized, plane, surfaces[id], extent)) {
-        extents.push_back (extent);
-        measured.push_back (i);
-      }
-    }
-    int best_count = 0;
-    std::size_t best_surface = std::numeric_limits<std::size_t>::max();
-    for (std::size_t a = 0; a < extents.size(); ++a) {
-      const auto count = static_cast<int> (
-          std::count_if (extents.begin(), extents.end(), [&] (const InstanceExtent& b) {
-            return agree (extents[a].size, b.size);
-          }));
-      if (count > best_count ||
-          (count == best_count && extents[a].surface.size() < best_surface)) {
-        best_count = count;
-        best_surface = extents[a].surface.size();
-        sizes[m].size = extents[a].size;
-        sizes[m].box_in_model =
-            models[m].instances[measured[a]].pose.inverse() * extents[a].pose;
-      }
-    }
-    sizes[m].valid = best_count > 0 && best_count >= min_agreeing;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    std::size_t representative = 0;
+    const std::vector<std::size_t> group = largestSizeGroup (
+        extents[m], measuredInstances (extents[m]), agree, representative);
+    if (group.empty())
+      continue;
+    sizes[m].size = extents[m][representative].size;
+    sizes[m].box_in_model = models[m].instances[representative].pose.inverse() *
+                            extents[m][representative].pose;
+    sizes[m].valid = static_cast<int> (group.size()) >= min_agreeing;
   }
   return true;
 }
@@ -91,6 +152,21 @@ ModelSizeMeasurement::measurementProblem (const ObjectModels& models) const
   if (min_agreeing_ < 1)
     return "at least one instance must agree on a size";
   return "";
+}
+
+bool
+ModelSizeMeasurement::measureBoxes (const ObjectModels& models,
+                                    const Eigen::Vector4f& plane,
+                                    std::vector<InstanceExtents>& extents) const
+{
+  return measureInstanceBoxes (*surface_.organized,
+                               plane,
+                               surface_.keypoint_pixels,
+                               models,
+                               max_step_,
+                               max_radius_,
+                               plane_tolerance_,
+                               extents);
 }
 
 bool

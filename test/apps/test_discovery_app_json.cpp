@@ -80,6 +80,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "leftovers",
                             "patches",
                             "surface",
+                            "size_split",
                             "size_merge",
                             "repeated_prints",
                             "size_search",

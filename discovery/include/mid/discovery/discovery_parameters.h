@@ -300,7 +300,14 @@ struct DiscoveryParameters
   float surface_weight = 1.0f;
   int surface_iterations = 4;
   ///@}
-  /** \brief Last, merge models whose copies occupy boxes of one size on the support plane (not
+  /** \brief After the refinement on the depth, split a model whose copies occupy boxes of two
+    * sizes on the support plane that differ on every edge (not in the paper;
+    * ModelSizeSplitter): two products of one print layout joined into one model. Each size
+    * needs at least two copies that agree on it (within the size tolerances below). Needs the
+    * organized frame.
+    */
+  bool split_by_size = true;
+  /** \brief Then merge models whose copies occupy boxes of one size on the support plane (not
     * in the paper; ModelSizeMerger): the second models of one product, made of copies that
     * show other faces than the first model's, which no descriptor links. Sizes agree when
     * each edge differs by at most the larger of size_tolerance (metres, >= 0) and

@@ -2,6 +2,7 @@
 
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/object_model.h>
+#include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/support_plane_measurement.h>
 #include <mid/segmentation/surface_gap.h>
 
@@ -33,9 +34,27 @@ public:
   bool
   operator() (const Eigen::Vector3f& a, const Eigen::Vector3f& b) const;
 
+  /** \brief True if the sizes a and b disagree on every edge: the boxes of two products, not
+    * one box measured once whole and once joined with a neighbour or partly hidden (which
+    * changes one or two edges, seldom the height too).
+    */
+  bool
+  differOnEveryEdge (const Eigen::Vector3f& a, const Eigen::Vector3f& b) const;
+
 private:
+  /** \brief True if the edges x and y (metres) agree. */
+  bool
+  edgesAgree (float x, float y) const;
+
   float absolute_, relative_;
 };
+
+/** \brief Boxes that instances occupy on the support plane, one per instance; an instance whose
+  * surface holds too few points for a box (fitInstanceBox()) has an empty surface and a zero
+  * size.
+  */
+using InstanceExtents =
+    std::vector<InstanceExtent, Eigen::aligned_allocator<InstanceExtent>>;
 
 /** \brief The size of the box a model's copies occupy on the support plane (not in the paper). */
 struct ModelSize
@@ -62,6 +81,49 @@ using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
   */
 std::vector<pcl::Indices>
 instanceSeedPixels (const ObjectModels& models, const pcl::Indices& keypoint_pixels);
+
+/** \brief Measure the box every instance of every model occupies on the support plane: the
+  * surfaces of all instances grow at once from their keypoints' pixels
+  * (growInstanceSurfaces()), and a box is fitted to each (fitInstanceBox()).
+  * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)
+  * \param[in] plane the support plane (fitSupportPlane())
+  * \param[in] keypoint_pixels each keypoint's pixel in `organized` (row * width + column)
+  * \param[in] models the models; their observations must index keypoint_pixels (not checked)
+  * \param[in] max_step, max_radius, plane_tolerance the growth (growInstanceSurfaces())
+  * \param[out] extents one list per model, one box per instance, in order (InstanceExtents)
+  * \return false (with a PCL_ERROR, extents empty) if the growth refuses the frame or a seed
+  */
+bool
+measureInstanceBoxes (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const Eigen::Vector4f& plane,
+                      const pcl::Indices& keypoint_pixels,
+                      const ObjectModels& models,
+                      float max_step,
+                      float max_radius,
+                      float plane_tolerance,
+                      std::vector<InstanceExtents>& extents);
+
+/** \brief The indices of the boxes in `extents` that have a size (a surface they were fitted
+  * to), in order.
+  */
+std::vector<std::size_t>
+measuredInstances (const InstanceExtents& extents);
+
+/** \brief The largest group of boxes of one size: among `candidates`, the box that agrees with
+  * the most of them (ties: the one with the smaller surface, as a surface is more often too
+  * large, joined with something, than too small), and the candidates that agree with it.
+  * \param[in] extents the boxes
+  * \param[in] candidates indices into `extents` of the boxes to group, each with a size
+  * \param[in] agree when two sizes are one
+  * \param[out] representative the index (into `extents`) of the box the group agrees with;
+  * unchanged when there are no candidates
+  * \return the group, in the order of `candidates`; empty if there are no candidates
+  */
+std::vector<std::size_t>
+largestSizeGroup (const InstanceExtents& extents,
+                  const std::vector<std::size_t>& candidates,
+                  const SizeAgreement& agree,
+                  std::size_t& representative);
 
 /** \brief Measure the box every model's copies occupy on the support plane.
   *
@@ -150,6 +212,12 @@ protected:
   measureSizes (const ObjectModels& models,
                 const Eigen::Vector4f& plane,
                 ModelSizes& sizes) const;
+
+  /** \brief measureInstanceBoxes() on the support plane with the parameters above. */
+  bool
+  measureBoxes (const ObjectModels& models,
+                const Eigen::Vector4f& plane,
+                std::vector<InstanceExtents>& extents) const;
 
   /** \brief When two sizes agree, by the size tolerances. */
   SizeAgreement
