@@ -153,6 +153,12 @@ printHelp (const char* program)
         static_cast<double> (d.patch_min_correlation));
   line (
       "-max_patches N", "patches tried per frame", static_cast<double> (d.max_patches));
+  line ("-box_margin M",
+        "box search: keypoints this far beyond a copy's box extend its model, metres",
+        static_cast<double> (d.box_search_margin));
+  line ("-box_hypotheses N",
+        "box search: seed matches tried per model",
+        static_cast<double> (d.box_search_hypotheses));
   line ("-split_corr C",
         "instances of one model alike at this grey-level correlation, each way",
         static_cast<double> (d.split_min_correlation));
@@ -247,6 +253,13 @@ printHelp (const char* program)
       "explains\n");
   print_info ("                      (the paper's behaviour)\n");
   print_info (
+      "  -no_box_search      no search for more instances with each model extended by "
+      "the\n");
+  print_info (
+      "                      keypoints inside its copies' boxes on the table (the "
+      "paper's\n");
+  print_info ("                      behaviour)\n");
+  print_info (
       "  -split              split a model whose instances fall into groups that "
       "do not\n");
   print_info ("                      look alike (off by default, as in the paper)\n");
@@ -321,6 +334,9 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-patch_inliers", 1},
                                       {"-patch_corr", 1},
                                       {"-max_patches", 1},
+                                      {"-no_box_search", 0},
+                                      {"-box_margin", 1},
+                                      {"-box_hypotheses", 1},
                                       {"-split", 0},
                                       {"-no_surface", 0},
                                       {"-surface_step", 1},
@@ -431,6 +447,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.verify_clusters = !pcl::console::find_switch (argc, argv, "-no_verification");
   p.guided_search = !pcl::console::find_switch (argc, argv, "-no_guided");
   p.patch_discovery = !pcl::console::find_switch (argc, argv, "-no_patches");
+  p.box_search = !pcl::console::find_switch (argc, argv, "-no_box_search");
   p.split_by_appearance = pcl::console::find_switch (argc, argv, "-split");
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.split_by_size = !pcl::console::find_switch (argc, argv, "-no_size_split");
@@ -480,6 +497,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-patch_corr", p.patch_min_correlation) &&
       parseNumber (argc, argv, "-max_patches", p.max_patches) &&
       parseNumber (argc, argv, "-guided_hypotheses", p.guided_hypotheses) &&
+      parseNumber (argc, argv, "-box_margin", p.box_search_margin) &&
+      parseNumber (argc, argv, "-box_hypotheses", p.box_search_hypotheses) &&
       parseNumber (argc, argv, "-split_corr", p.split_min_correlation) &&
       parseNumber (argc, argv, "-surface_step", p.surface_sample_step) &&
       parseNumber (argc, argv, "-surface_dist", p.surface_max_distance) &&

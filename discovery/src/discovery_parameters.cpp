@@ -165,6 +165,14 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "leftover_margin",
              static_cast<double> (p.leftover_margin),
              "finite and >= 0");
+  c.require (p.box_search_margin >= 0.0f && std::isfinite (p.box_search_margin),
+             "box_search_margin",
+             static_cast<double> (p.box_search_margin),
+             "finite and >= 0");
+  c.require (p.box_search_hypotheses >= 1,
+             "box_search_hypotheses",
+             static_cast<double> (p.box_search_hypotheses),
+             ">= 1");
   c.require (p.guided_seed_distance > 0.0f,
              "guided_seed_distance",
              static_cast<double> (p.guided_seed_distance),

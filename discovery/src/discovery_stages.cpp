@@ -16,6 +16,7 @@
 #include <mid/segmentation/guided_instance_search.h>
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/keypoint_patch.h>
+#include <mid/segmentation/model_box_extension.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/model_size_splitter.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -816,6 +817,48 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
 }
 
+/** `frame` with the pixel of each of the result's keypoints. */
+KeypointSurface
+withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
+{
+  KeypointSurface keypoint_surface = frame;
+  keypoint_surface.keypoint_pixels.clear();
+  for (const auto& k : result.image_keypoints)
+    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+  return keypoint_surface;
+}
+
+/** Look for more copies of each model with the guided search, the models extended for it by
+  * the keypoints their copies show inside their boxes on the table (ModelBoxExtender,
+  * DiscoveryParameters::box_search), when the guided search can run; times the "box_search"
+  * stage either way.
+  */
+bool
+searchFromBoxes (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 FramePlane& plane,
+                 DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  const KeypointSurface keypoint_surface = withKeypointPixels (frame, result);
+  if (p.box_search && p.guided_search && frame.organized &&
+      canSearchGuided (keypoint_surface, result) && !result.models.empty()) {
+    ModelBoxExtender extender;
+    setUpBoxMeasurement (p, frame, result, plane, extender);
+    extender.setInputDescriptors (result.descriptors);
+    extender.setMargin (p.box_search_margin);
+    ModelExtension extension;
+    DiscoveryParameters search = p;
+    search.guided_hypotheses = p.box_search_hypotheses;
+    if (!extender.extend (result.models, extension) ||
+        !searchGuidedInstances (search, keypoint_surface, result) ||
+        !retractModelExtension (extension, result.models))
+      return false;
+  }
+  result.timing_ms.emplace_back ("box_search", watch.getTime());
+  return true;
+}
+
 /** Split the models whose copies occupy boxes of two sizes (DiscoveryParameters::split_by_size),
   * when the organized frame is known; times the "size_split" stage either way.
   */
@@ -1046,7 +1089,8 @@ discoverFromKeypoints (const DiscoveryParameters& p,
   const std::size_t timed = result.timing_ms.size();
   const KeypointSurface frame = frameSurface (p, organized);
   FramePlane plane;
-  if (runStages (p, result, surface, frame) && refineOnSurface (p, frame, result) &&
+  if (runStages (p, result, surface, frame) &&
+      searchFromBoxes (p, frame, plane, result) && refineOnSurface (p, frame, result) &&
       splitBySize (p, frame, plane, result) && mergeBySize (p, frame, plane, result) &&
       removeRepeatedPrints (p, frame, plane, result) &&
       searchBySize (p, frame, plane, result) && pruneObservations (p, result)) {

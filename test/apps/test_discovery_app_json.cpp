@@ -79,6 +79,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "detection",
                             "leftovers",
                             "patches",
+                            "box_search",
                             "surface",
                             "size_split",
                             "size_merge",

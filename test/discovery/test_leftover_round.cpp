@@ -141,11 +141,12 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
   for (const auto& instance : result.models[1].instances)
     for (const auto k : instance.keypoints)
       EXPECT_GE (k, 90); // A's 3 x 30 keypoints come first
-  // Without an organized frame the patches, the surface refinement, the size split and merge,
-  // the removal of repeated prints and the size search do not run, but are timed; the pruning
-  // of the observations runs.
+  // Without an organized frame the patches, the search from the boxes, the surface
+  // refinement, the size split and merge, the removal of repeated prints and the size search
+  // do not run, but are timed; the pruning of the observations runs.
   const std::vector<std::string> last = {"leftovers",
                                          "patches",
+                                         "box_search",
                                          "surface",
                                          "size_split",
                                          "size_merge",

@@ -1,0 +1,277 @@
+// ModelBoxExtender and retractModelExtension on rendered boxes resting on a table at known
+// poses: models that observe only one half of each box's keypoints.
+#include "resting_boxes.h"
+
+#include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/model_box_extension.h>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace {
+
+using mid::test::fourBoxes;
+using mid::test::kPrintedBoxSize;
+using mid::test::kTableDepth;
+using Boxes = mid::test::RestingBoxes;
+
+/** The keypoints on box b in one half of it: x < 0 (`first`) or x >= 0 in the box's frame. */
+pcl::Indices
+halfOf (const Boxes& scene, int b, bool first)
+{
+  const Eigen::Isometry3d to_box =
+      scene.scene.boxes[static_cast<std::size_t> (b)].pose.inverse();
+  pcl::Indices half;
+  for (const auto k : scene.on ({b})) {
+    const double x = (to_box * (*scene.keypoints)[static_cast<std::size_t> (k)]
+                                   .getVector3fMap()
+                                   .cast<double>())
+                         .x();
+    if ((x < 0.0) == first)
+      half.push_back (k);
+  }
+  return half;
+}
+
+/** A model whose instances sit on the given boxes at their true poses (the model frame is the
+  * boxes' own) and observe the first half of each box's keypoints, each a landmark of its own.
+  */
+mid::ObjectModel
+halfModel (const Boxes& scene, const std::vector<int>& boxes)
+{
+  mid::ObjectModel model;
+  for (const int b : boxes)
+    mid::addInstanceOfKeypoints (
+        *scene.keypoints,
+        *scene.descriptors,
+        halfOf (scene, b, true),
+        scene.scene.boxes[static_cast<std::size_t> (b)].pose.matrix().cast<float>(),
+        model);
+  return model;
+}
+
+mid::ModelBoxExtender
+extenderFor (const Boxes& scene)
+{
+  mid::ModelBoxExtender extender;
+  extender.setInputKeypoints (scene.keypoints);
+  extender.setInputDescriptors (scene.descriptors);
+  extender.setKeypointSurface (scene.surface);
+  return extender;
+}
+
+/** Height of a point above the table (which faces the camera at kTableDepth). */
+double
+aboveTable (const pcl::PointNormal& point)
+{
+  return kTableDepth - static_cast<double> (point.z);
+}
+
+TEST (ModelBoxExtender, ExtendsEachInstanceByTheKeypointsInsideItsBox)
+{
+  const Boxes scene (fourBoxes());
+  const mid::ObjectModel original = halfModel (scene, {0, 1});
+  mid::ObjectModels models = {original};
+  mid::ModelExtension extension;
+  ASSERT_TRUE (extenderFor (scene).extend (models, extension));
+  ASSERT_EQ (extension.landmarks_before,
+             std::vector<std::size_t>{original.landmarks.size()});
+  ASSERT_EQ (extension.observations.size(), 1u);
+  const mid::ObjectModel& model = models[0];
+  ASSERT_EQ (model.instances.size(), 2u);
+  EXPECT_EQ (model.landmarks.size(),
+             original.landmarks.size() + extension.observations[0].size());
+  EXPECT_EQ (model.descriptors.size(), model.descriptor_landmarks.size());
+
+  for (std::size_t i = 0; i < 2; ++i) {
+    const int b = static_cast<int> (i);
+    const auto& instance = model.instances[i];
+    ASSERT_EQ (instance.keypoints.size(), instance.landmarks.size());
+    // The first half stays as it was.
+    const auto& before = original.instances[i];
+    for (std::size_t o = 0; o < before.keypoints.size(); ++o) {
+      EXPECT_EQ (instance.keypoints[o], before.keypoints[o]);
+      EXPECT_EQ (instance.landmarks[o], before.landmarks[o]);
+    }
+    // Every added keypoint lies on the instance's own box, its landmark at the keypoint
+    // carried into the model frame (the box's own) by the true pose.
+    const std::set<pcl::index_t> added (
+        instance.keypoints.begin() +
+            static_cast<std::ptrdiff_t> (before.keypoints.size()),
+        instance.keypoints.end());
+    const Eigen::Isometry3d to_box = scene.scene.boxes[i].pose.inverse();
+    for (std::size_t o = before.keypoints.size(); o < instance.keypoints.size(); ++o) {
+      const auto k = static_cast<std::size_t> (instance.keypoints[o]);
+      EXPECT_EQ (scene.box_of[k], b) << "keypoint " << k;
+      const Eigen::Vector3f expected =
+          (to_box * (*scene.keypoints)[k].getVector3fMap().cast<double>())
+              .cast<float>();
+      const auto l = static_cast<std::size_t> (instance.landmarks[o]);
+      EXPECT_LT ((model.landmarks[l].getVector3fMap() - expected).norm(), 1e-4f);
+      EXPECT_GE (l, original.landmarks.size());
+    }
+    // ... and every keypoint of its other half that is not within the table's tolerance
+    // (10 mm) was added.
+    std::size_t other_half = 0;
+    for (const auto k : halfOf (scene, b, false))
+      if (aboveTable ((*scene.keypoints)[static_cast<std::size_t> (k)]) > 0.012) {
+        EXPECT_EQ (added.count (k), 1u) << "box " << b << ", keypoint " << k;
+        ++other_half;
+      }
+    EXPECT_GE (other_half, 10u) << "box " << b;
+  }
+  // Boxes 2 and 3 (not the model's copies) and the table give nothing.
+  std::size_t total = 0;
+  for (const auto& [i, k] : extension.observations[0]) {
+    EXPECT_EQ (scene.box_of[static_cast<std::size_t> (k)], static_cast<int> (i));
+    ++total;
+  }
+  EXPECT_EQ (total, model.landmarks.size() - original.landmarks.size());
+}
+
+TEST (ModelBoxExtender, TakesNothingFromTheTable)
+{
+  // A printed mat 3 mm thin lies on the table 1 cm beside box 0 (the table itself shows no
+  // texture). Grown by 3 cm, box 0 reaches over the mat, whose keypoints lie within the
+  // table's tolerance and are not the object's.
+  auto boxes = fourBoxes();
+  boxes.push_back (mid::test::restingBox (
+      mid::test::kSoyPrint, -0.16, 0.0, 10.0, {0.12, 0.09, 0.003}));
+  const Boxes scene (boxes);
+  ASSERT_GE (scene.on ({4}).size(), 20u) << "the mat shows texture";
+  mid::ObjectModels models = {halfModel (scene, {0, 1})};
+  mid::ModelBoxExtender wide = extenderFor (scene);
+  wide.setMargin (0.03f);
+  mid::ModelExtension extension;
+  ASSERT_TRUE (wide.extend (models, extension));
+  ASSERT_FALSE (extension.observations[0].empty());
+  for (const auto& [i, k] : extension.observations[0])
+    EXPECT_EQ (scene.box_of[static_cast<std::size_t> (k)], static_cast<int> (i))
+        << "keypoint " << k;
+}
+
+TEST (ModelBoxExtender,
+      RetractingTakesTheObservationsOutAndKeepsTheLandmarksAndNewCopies)
+{
+  const Boxes scene (fourBoxes());
+  const mid::ObjectModel original = halfModel (scene, {0, 1});
+  mid::ObjectModels models = {original};
+  mid::ModelExtension extension;
+  ASSERT_TRUE (extenderFor (scene).extend (models, extension));
+  ASSERT_GE (extension.observations[0].size(), 6u);
+  const mid::ObjectModel extended = models[0];
+
+  // A copy found since, observing three of the added landmarks (through box 0's keypoints:
+  // what matters here is that its observations stay).
+  mid::ModelInstance found;
+  found.pose = extended.instances[1].pose;
+  const auto& first = extended.instances[0];
+  for (std::size_t o = first.keypoints.size() - 3; o < first.keypoints.size(); ++o) {
+    found.keypoints.push_back (first.keypoints[o]);
+    found.landmarks.push_back (first.landmarks[o]);
+  }
+  models[0].instances.push_back (found);
+
+  // Another list of models is refused, and nothing changes.
+  mid::ObjectModels two = {models[0], models[0]};
+  EXPECT_FALSE (mid::retractModelExtension (extension, two));
+  EXPECT_EQ (two[0].instances[0].keypoints.size(), first.keypoints.size());
+
+  ASSERT_TRUE (mid::retractModelExtension (extension, models));
+  const mid::ObjectModel& model = models[0];
+  ASSERT_EQ (model.instances.size(), 3u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ (model.instances[i].keypoints, original.instances[i].keypoints);
+    EXPECT_EQ (model.instances[i].landmarks, original.instances[i].landmarks);
+  }
+  EXPECT_EQ (model.instances[2].keypoints, found.keypoints);
+  EXPECT_EQ (model.instances[2].landmarks, found.landmarks);
+  // The landmarks and descriptors stay as extended.
+  ASSERT_EQ (model.landmarks.size(), extended.landmarks.size());
+  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
+    EXPECT_EQ (model.landmarks[l].getVector3fMap(),
+               extended.landmarks[l].getVector3fMap());
+  EXPECT_EQ (model.descriptor_landmarks, extended.descriptor_landmarks);
+}
+
+TEST (ModelBoxExtender, LetsTheGuidedSearchFindACopyShowingWhatTheModelLacks)
+{
+  // The model observes the first half of box 0; box 1, a copy, offers only its other half.
+  const Boxes scene (fourBoxes());
+  mid::ObjectModels models = {halfModel (scene, {0})};
+  mid::GuidedInstanceSearch search;
+  search.setInputKeypoints (scene.keypoints);
+  search.setInputDescriptors (scene.descriptors);
+  search.setImageKeypoints (scene.image_keypoints);
+  search.setKeypointSurface (scene.surface);
+  search.setCandidates (halfOf (scene, 1, false));
+  search.setFoundInstances (models[0].instances);
+
+  mid::ModelInstances found;
+  ASSERT_TRUE (search.search (models[0], found));
+  EXPECT_TRUE (found.empty()) << "the model holds nothing of that half";
+
+  mid::ModelExtension extension;
+  ASSERT_TRUE (extenderFor (scene).extend (models, extension));
+  ASSERT_TRUE (search.search (models[0], found));
+  ASSERT_EQ (found.size(), 1u);
+  EXPECT_EQ (scene.boxOf (found[0].keypoints), 1);
+  // The model frame is box 0's own: the copy's pose is box 1's true pose.
+  const Eigen::Matrix4d error =
+      found[0].pose.cast<double>().inverse() * scene.scene.boxes[1].pose.matrix();
+  EXPECT_LT (Eigen::AngleAxisd (error.topLeftCorner<3, 3>()).angle() * 180.0 / M_PI,
+             2.0);
+  const Eigen::Vector3d shift = error.topRightCorner<3, 1>();
+  EXPECT_LT (shift.norm(), 0.003);
+}
+
+TEST (ModelBoxExtender, LeavesTheModelsWithoutASupportPlaneOrASize)
+{
+  const Boxes scene (fourBoxes());
+  const mid::ObjectModels original = {halfModel (scene, {0, 1})};
+  mid::ObjectModels models = original;
+  mid::ModelBoxExtender no_plane = extenderFor (scene);
+  no_plane.setSupportPlane (Eigen::Vector4f::Zero());
+  mid::ModelExtension extension;
+  ASSERT_TRUE (no_plane.extend (models, extension));
+  EXPECT_EQ (models[0].landmarks.size(), original[0].landmarks.size());
+  EXPECT_TRUE (extension.observations[0].empty());
+  EXPECT_TRUE (mid::retractModelExtension (extension, models));
+
+  // Two measured instances that must agree on a size, and disagree: no size, no extension.
+  const Boxes other (fourBoxes ({0.15, 0.11, 0.06}));
+  mid::ObjectModels unsized = {halfModel (other, {0, 2})};
+  mid::ModelBoxExtender strict = extenderFor (other);
+  strict.setMinAgreeing (2);
+  const std::size_t landmarks = unsized[0].landmarks.size();
+  ASSERT_TRUE (strict.extend (unsized, extension));
+  EXPECT_EQ (unsized[0].landmarks.size(), landmarks);
+}
+
+TEST (ModelBoxExtender, RefusesBadInputAndLeavesTheModels)
+{
+  const Boxes scene (fourBoxes());
+  const mid::ObjectModels original = {halfModel (scene, {0, 1})};
+  const auto refuses = [&] (const mid::ModelBoxExtender& extender) {
+    mid::ObjectModels models = original;
+    mid::ModelExtension extension;
+    extension.landmarks_before = {1, 2, 3};
+    EXPECT_FALSE (extender.extend (models, extension));
+    EXPECT_TRUE (extension.landmarks_before.empty());
+    EXPECT_EQ (models[0].landmarks.size(), original[0].landmarks.size());
+  };
+  mid::ModelBoxExtender no_descriptors = extenderFor (scene);
+  no_descriptors.setInputDescriptors (nullptr);
+  refuses (no_descriptors);
+  mid::ModelBoxExtender negative = extenderFor (scene);
+  negative.setMargin (-0.001f);
+  refuses (negative);
+  mid::ModelBoxExtender no_keypoints = extenderFor (scene);
+  no_keypoints.setInputKeypoints (nullptr);
+  refuses (no_keypoints);
+}
+
+} // namespace
