@@ -153,23 +153,23 @@ TEST (ModelBoxExtender, TakesNothingFromTheTable)
         << "keypoint " << k;
 }
 
-TEST (ModelBoxExtender,
-      RetractingTakesTheObservationsOutAndKeepsTheLandmarksAndNewCopies)
+TEST (ModelBoxExtender, RetractingKeepsOnlyWhatANewCopyObserves)
 {
   const Boxes scene (fourBoxes());
   const mid::ObjectModel original = halfModel (scene, {0, 1});
   mid::ObjectModels models = {original};
   mid::ModelExtension extension;
   ASSERT_TRUE (extenderFor (scene).extend (models, extension));
-  ASSERT_GE (extension.observations[0].size(), 6u);
   const mid::ObjectModel extended = models[0];
+  const auto& first = extended.instances[0];
+  const std::size_t own = original.instances[0].keypoints.size();
+  ASSERT_GE (first.keypoints.size(), own + 4);
 
-  // A copy found since, observing three of the added landmarks (through box 0's keypoints:
-  // what matters here is that its observations stay).
+  // A copy found since, observing three of the added landmarks but not the first one added
+  // (through box 0's keypoints: what matters here is what stays of the model).
   mid::ModelInstance found;
   found.pose = extended.instances[1].pose;
-  const auto& first = extended.instances[0];
-  for (std::size_t o = first.keypoints.size() - 3; o < first.keypoints.size(); ++o) {
+  for (std::size_t o = own + 1; o < own + 4; ++o) {
     found.keypoints.push_back (first.keypoints[o]);
     found.landmarks.push_back (first.landmarks[o]);
   }
@@ -179,22 +179,36 @@ TEST (ModelBoxExtender,
   mid::ObjectModels two = {models[0], models[0]};
   EXPECT_FALSE (mid::retractModelExtension (extension, two));
   EXPECT_EQ (two[0].instances[0].keypoints.size(), first.keypoints.size());
+  EXPECT_EQ (two[0].landmarks.size(), extended.landmarks.size());
 
   ASSERT_TRUE (mid::retractModelExtension (extension, models));
   const mid::ObjectModel& model = models[0];
   ASSERT_EQ (model.instances.size(), 3u);
+  // The extended instances observe what they observed before, the original landmarks and
+  // descriptors come first as they were, and of the added landmarks the three the new copy
+  // observes stay, renumbered after them, each with its descriptor.
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_EQ (model.instances[i].keypoints, original.instances[i].keypoints);
     EXPECT_EQ (model.instances[i].landmarks, original.instances[i].landmarks);
   }
-  EXPECT_EQ (model.instances[2].keypoints, found.keypoints);
-  EXPECT_EQ (model.instances[2].landmarks, found.landmarks);
-  // The landmarks and descriptors stay as extended.
-  ASSERT_EQ (model.landmarks.size(), extended.landmarks.size());
-  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
+  ASSERT_EQ (model.landmarks.size(), original.landmarks.size() + 3);
+  for (std::size_t l = 0; l < original.landmarks.size(); ++l)
     EXPECT_EQ (model.landmarks[l].getVector3fMap(),
-               extended.landmarks[l].getVector3fMap());
-  EXPECT_EQ (model.descriptor_landmarks, extended.descriptor_landmarks);
+               original.landmarks[l].getVector3fMap());
+  ASSERT_EQ (model.descriptors.size(), original.descriptors.size() + 3);
+  EXPECT_EQ (model.descriptor_landmarks.size(), model.descriptors.size());
+  const auto& copy = model.instances[2];
+  EXPECT_EQ (copy.keypoints, found.keypoints);
+  ASSERT_EQ (copy.landmarks.size(), 3u);
+  for (std::size_t o = 0; o < 3; ++o) {
+    const auto now = static_cast<std::size_t> (copy.landmarks[o]);
+    const auto then = static_cast<std::size_t> (found.landmarks[o]);
+    EXPECT_EQ (now, original.landmarks.size() + o);
+    EXPECT_EQ (model.landmarks[now].getVector3fMap(),
+               extended.landmarks[then].getVector3fMap());
+    EXPECT_EQ (model.descriptor_landmarks[original.descriptors.size() + o],
+               static_cast<int> (now));
+  }
 }
 
 TEST (ModelBoxExtender, LetsTheGuidedSearchFindACopyShowingWhatTheModelLacks)

@@ -47,9 +47,9 @@ struct ModelExtension
   *
   * A model without a size (no instance measured) is not extended. The added landmarks rest on
   * one view and on the instance's pose: meant for a search of more copies (the guided search),
-  * after which retractModelExtension() takes the added observations out of the instances
-  * again (an instance would otherwise hold keypoints of a neighbour that its grown box
-  * reaches); the landmarks stay. Deterministic (the plane's hypotheses are drawn with a fixed
+  * after which retractModelExtension() takes them out again (an instance would otherwise hold
+  * keypoints of a neighbour that its grown box reaches, and the model points of it), but for
+  * those a new copy observes. Deterministic (the plane's hypotheses are drawn with a fixed
   * seed).
   */
 class ModelBoxExtender : public ModelSizeMeasurement
@@ -102,11 +102,12 @@ private:
   float margin_ = 0.005f;
 };
 
-/** \brief Take out of the instances what ModelBoxExtender::extend() gave them: the observations
-  * it added to the instances it extended. The added landmarks stay in the models, with their
-  * descriptors: points of the object seen on one copy, which the instances' poses placed in
-  * the model frame (as the paper extends a model by the points of a newly detected instance).
-  * Instances appended since (copies found with the extension) keep their observations.
+/** \brief Take out of the models what ModelBoxExtender::extend() added: the added observations
+  * of the instances it extended, then the added landmarks (with their descriptors) that no
+  * instance observes after that; the landmarks after them are renumbered. Instances appended
+  * since (copies found with the extension) keep their observations, and the added landmarks
+  * they observe stay: the model grows by the points of its new copies, as the paper's
+  * detection extends a model.
   * \param[in] extension what extend() returned for `models`
   * \param[in,out] models the models, extended and possibly given new instances since, in the
   * same order
