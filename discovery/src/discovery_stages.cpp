@@ -473,19 +473,22 @@ makeGuidedSearch (const DiscoveryParameters& p,
 }
 
 /** Look for more instances of each model from single matches
-  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box, when
-  * the frame, its grey levels and the image keypoints are known.
+  * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box and
+  * not `excluded` (one flag per keypoint, or empty), when the frame, its grey levels and the
+  * image keypoints are known.
   */
 bool
 searchGuidedInstances (const DiscoveryParameters& p,
                        const KeypointSurface& surface,
-                       DiscoveryResult& result)
+                       DiscoveryResult& result,
+                       const std::vector<bool>& excluded = {})
 {
   if (!p.guided_search || !canSearchGuided (surface, result) || result.models.empty())
     return true;
   GuidedInstanceSearch search = makeGuidedSearch (p, surface, result);
   for (auto& model : result.models) {
-    std::vector<bool> taken (result.keypoints->size(), false);
+    std::vector<bool> taken = excluded;
+    taken.resize (result.keypoints->size(), false);
     markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
     pcl::Indices candidates;
     ModelInstances copies;
@@ -830,8 +833,9 @@ withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
 
 /** Look for more copies of each model with the guided search, the models extended for it by
   * the keypoints their copies show inside their boxes on the table (ModelBoxExtender,
-  * DiscoveryParameters::box_search), when the guided search can run; times the "box_search"
-  * stage either way.
+  * DiscoveryParameters::box_search), among the keypoints off the table, then keep one instance
+  * per physical object (DiscoveryParameters::resolve_overlaps), when the guided search can
+  * run; times the "box_search" stage either way.
   */
 bool
 searchFromBoxes (const DiscoveryParameters& p,
@@ -847,13 +851,23 @@ searchFromBoxes (const DiscoveryParameters& p,
     setUpBoxMeasurement (p, frame, result, plane, extender);
     extender.setInputDescriptors (result.descriptors);
     extender.setMargin (p.box_search_margin);
+    // The copies of an object with a box stand off the table: the table's keypoints (a
+    // printed sheet lying on it) are no candidates.
+    std::vector<bool> on_table (result.keypoints->size(), false);
+    const Eigen::Vector4f& table = plane.plane;
+    for (std::size_t k = 0; k < on_table.size() && !table.isZero(); ++k)
+      on_table[k] =
+          std::abs (table.head<3>().dot ((*result.keypoints)[k].getVector3fMap()) +
+                    table[3]) <= extender.getPlaneTolerance();
     ModelExtension extension;
     DiscoveryParameters search = p;
     search.guided_hypotheses = p.box_search_hypotheses;
     if (!extender.extend (result.models, extension) ||
-        !searchGuidedInstances (search, keypoint_surface, result) ||
+        !searchGuidedInstances (search, keypoint_surface, result, on_table) ||
         !retractModelExtension (extension, result.models))
       return false;
+    if (p.resolve_overlaps)
+      resolveOverlaps (p, *result.keypoints, result.models);
   }
   result.timing_ms.emplace_back ("box_search", watch.getTime());
   return true;
