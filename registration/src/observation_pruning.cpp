@@ -21,36 +21,6 @@ observationCounts (const ObjectModel& model)
   return counts;
 }
 
-/** Remove the landmarks flagged in `remove` with their descriptors, renumbering the rest in
-  * the descriptors' and instances' references (no instance may observe a removed one).
-  */
-void
-removeLandmarks (const std::vector<bool>& remove, ObjectModel& model)
-{
-  std::vector<int> renumbered (model.landmarks.size(), -1);
-  KeypointCloud landmarks;
-  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
-    if (!remove[l]) {
-      renumbered[l] = static_cast<int> (landmarks.size());
-      landmarks.push_back (model.landmarks[l]);
-    }
-  SIFTDescriptorCloud descriptors;
-  std::vector<int> descriptor_landmarks;
-  for (std::size_t d = 0; d < model.descriptors.size(); ++d) {
-    const int l = renumbered[static_cast<std::size_t> (model.descriptor_landmarks[d])];
-    if (l >= 0) {
-      descriptors.push_back (model.descriptors[d]);
-      descriptor_landmarks.push_back (l);
-    }
-  }
-  for (auto& instance : model.instances)
-    for (auto& l : instance.landmarks)
-      l = renumbered[static_cast<std::size_t> (l)];
-  model.landmarks = landmarks;
-  model.descriptors = descriptors;
-  model.descriptor_landmarks = descriptor_landmarks;
-}
-
 } // namespace
 
 bool

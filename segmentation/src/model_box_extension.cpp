@@ -48,37 +48,6 @@ placeBoxes (const ObjectModel& model, const ModelSize& size, float margin)
   return boxes;
 }
 
-/** Remove the landmarks flagged in `remove` with their descriptors, renumbering the rest in the
-  * descriptors' and instances' references (no instance observes a removed one).
-  */
-void
-removeAddedLandmarks (const std::vector<bool>& remove, ObjectModel& model)
-{
-  std::vector<int> renumbered (model.landmarks.size(), -1);
-  KeypointCloud landmarks;
-  for (std::size_t l = 0; l < model.landmarks.size(); ++l)
-    if (!remove[l]) {
-      renumbered[l] = static_cast<int> (landmarks.size());
-      landmarks.push_back (model.landmarks[l]);
-    }
-  SIFTDescriptorCloud descriptors;
-  std::vector<int> descriptor_landmarks;
-  for (std::size_t d = 0; d < model.descriptors.size(); ++d) {
-    const int l = renumbered[static_cast<std::size_t> (model.descriptor_landmarks[d])];
-    if (l >= 0) {
-      descriptors.push_back (model.descriptors[d]);
-      descriptor_landmarks.push_back (l);
-    }
-  }
-  for (auto& instance : model.instances)
-    for (auto& l : instance.landmarks)
-      l = renumbered[static_cast<std::size_t> (l)];
-  model.landmarks = landmarks;
-  model.descriptors = descriptors;
-  model.descriptor_landmarks = descriptor_landmarks;
-  updateModelDiameter (model);
-}
-
 } // namespace
 
 bool
@@ -188,7 +157,8 @@ retractModelExtension (const ModelExtension& extension, ObjectModels& models)
     std::vector<bool> remove (model.landmarks.size(), false);
     for (std::size_t l = extension.landmarks_before[m]; l < remove.size(); ++l)
       remove[l] = !seen[l];
-    removeAddedLandmarks (remove, model);
+    removeLandmarks (remove, model);
+    updateModelDiameter (model);
   }
   return true;
 }

@@ -115,6 +115,13 @@ posesCoincide (const Eigen::Matrix4f& a,
                float max_angle,
                float max_distance);
 
+/** \brief Remove the landmarks flagged in `remove` (one flag per landmark) with their
+  * descriptors, renumbering the rest in the descriptors' and instances' references. No
+  * instance may observe a removed landmark (not checked).
+  */
+void
+removeLandmarks (const std::vector<bool>& remove, ObjectModel& model);
+
 /** \brief The part of a model that some of its instances see: those instances, the landmarks
   * they observe (renumbered in their order) and those landmarks' descriptors, in the same
   * model frame.
