@@ -249,10 +249,12 @@ struct DiscoveryParameters
     * keypoints that no instance observes and that lie in the box its copies occupy on the
     * support plane, placed at each instance and grown by box_search_margin (metres, >= 0;
     * not in the paper; ModelBoxExtender): a copy showing a face that a found copy shows but
-    * the model's landmarks lack. After the search the extension goes again, but for the
-    * landmarks that new copies observe. Needs guided_search, the organized colour frame and
-    * the image keypoints. Chosen on the development frames: instance F1 0.885 -> 0.891 (seed
-    * 3), 0.871 -> 0.880 (seed 4) (doc/benchmark.md, session 32).
+    * the model's landmarks lack. Only keypoints off the table are candidates, and the
+    * overlaps are resolved after the search (resolve_overlaps). After the search the
+    * extension goes again, but for the landmarks that new copies observe. Needs guided_search,
+    * the organized colour frame and the image keypoints. Chosen on the development frames:
+    * instance F1 0.885 -> 0.889 (seed 3), 0.871 -> 0.881 (seed 4) (doc/benchmark.md, session
+    * 32).
     */
   ///@{
   bool box_search = true;
