@@ -783,6 +783,17 @@ struct FramePlane
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
+/** `frame` with the pixel of each of the result's keypoints. */
+KeypointSurface
+withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
+{
+  KeypointSurface keypoint_surface = frame;
+  keypoint_surface.keypoint_pixels.clear();
+  for (const auto& k : result.image_keypoints)
+    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+  return keypoint_surface;
+}
+
 /** Give a step that measures boxes on the table the frame's keypoints, their pixels in the
   * organized frame (which `frame` must hold) and the frame's support plane (fitted here on first
   * use).
@@ -793,12 +804,8 @@ setUpPlaneMeasurement (const KeypointSurface& frame,
                        FramePlane& plane,
                        SupportPlaneMeasurement& measurement)
 {
-  KeypointSurface keypoint_surface;
-  keypoint_surface.organized = frame.organized;
-  for (const auto& k : result.image_keypoints)
-    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
   measurement.setInputKeypoints (result.keypoints);
-  measurement.setKeypointSurface (keypoint_surface);
+  measurement.setKeypointSurface (withKeypointPixels (frame, result));
   if (!plane.fitted) {
     fitSupportPlane (
         *frame.organized, kDefaultPlaneTolerance, kMinSupportPlaneShare, plane.plane);
@@ -818,17 +825,6 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
 {
   setUpPlaneMeasurement (frame, result, plane, measurement);
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
-}
-
-/** `frame` with the pixel of each of the result's keypoints. */
-KeypointSurface
-withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
-{
-  KeypointSurface keypoint_surface = frame;
-  keypoint_surface.keypoint_pixels.clear();
-  for (const auto& k : result.image_keypoints)
-    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
-  return keypoint_surface;
 }
 
 /** Look for more copies of each model with the guided search, the models extended for it by
@@ -851,23 +847,33 @@ searchFromBoxes (const DiscoveryParameters& p,
     setUpBoxMeasurement (p, frame, result, plane, extender);
     extender.setInputDescriptors (result.descriptors);
     extender.setMargin (p.box_search_margin);
-    // The copies of an object with a box stand off the table: the table's keypoints (a
-    // printed sheet lying on it) are no candidates.
-    std::vector<bool> on_table (result.keypoints->size(), false);
-    const Eigen::Vector4f& table = plane.plane;
-    for (std::size_t k = 0; k < on_table.size() && !table.isZero(); ++k)
-      on_table[k] =
-          std::abs (table.head<3>().dot ((*result.keypoints)[k].getVector3fMap()) +
-                    table[3]) <= extender.getPlaneTolerance();
     ModelExtension extension;
-    DiscoveryParameters search = p;
-    search.guided_hypotheses = p.box_search_hypotheses;
-    if (!extender.extend (result.models, extension) ||
-        !searchGuidedInstances (search, keypoint_surface, result, on_table) ||
-        !retractModelExtension (extension, result.models))
+    if (!extender.extend (result.models, extension))
       return false;
-    if (p.resolve_overlaps)
-      resolveOverlaps (p, *result.keypoints, result.models);
+    const bool extended =
+        std::any_of (extension.observations.begin(),
+                     extension.observations.end(),
+                     [] (const auto& added) { return !added.empty(); });
+    if (extended) {
+      // The copies of an object with a box stand off the table: the table's keypoints (a
+      // printed sheet lying on it) are no candidates.
+      std::vector<bool> on_table (result.keypoints->size(), false);
+      for (std::size_t k = 0; k < on_table.size(); ++k)
+        on_table[k] = std::abs (planeDistance (
+                          plane.plane, (*result.keypoints)[k].getVector3fMap())) <=
+                      extender.getPlaneTolerance();
+      DiscoveryParameters search = p;
+      search.guided_hypotheses = p.box_search_hypotheses;
+      if (!searchGuidedInstances (search, keypoint_surface, result, on_table) ||
+          !retractModelExtension (extension, result.models))
+        return false;
+      // The search refined the models with the added observations in.
+      for (auto& model : result.models)
+        for (auto& instance : model.instances)
+          updateInstanceError (model, *result.keypoints, instance);
+      if (p.resolve_overlaps)
+        resolveOverlaps (p, *result.keypoints, result.models);
+    }
   }
   result.timing_ms.emplace_back ("box_search", watch.getTime());
   return true;

@@ -38,12 +38,6 @@ isFinite (const pcl::PointXYZ& p)
   return std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z);
 }
 
-float
-planeDistance (const Eigen::Vector4f& plane, const Eigen::Vector3f& p)
-{
-  return plane.head<3>().dot (p) + plane[3];
-}
-
 /** The least-squares plane through the points within tolerance of `plane`, twice: a plane
   * through three points is tilted by up to the tolerance, which the heights above it would
   * carry.
@@ -121,6 +115,12 @@ quantile (std::vector<float>& values, float q)
 }
 
 } // namespace
+
+float
+planeDistance (const Eigen::Vector4f& plane, const Eigen::Vector3f& p)
+{
+  return plane.head<3>().dot (p) + plane[3];
+}
 
 bool
 fitSupportPlane (const pcl::PointCloud<pcl::PointXYZ>& organized,

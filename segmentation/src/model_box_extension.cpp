@@ -87,7 +87,7 @@ ModelBoxExtender::extend (ObjectModels& models, ModelExtension& extension) const
   for (std::size_t k = 0; k < keypoints.size(); ++k) {
     const Eigen::Vector3f point = keypoints[k].getVector3fMap();
     if (observed[k] || !point.allFinite() ||
-        std::abs (plane.head<3>().dot (point) + plane[3]) <= plane_tolerance_)
+        std::abs (planeDistance (plane, point)) <= plane_tolerance_)
       continue;
     Owner owner;
     for (std::size_t m = 0; m < models.size(); ++m)
@@ -126,14 +126,19 @@ retractModelExtension (const ModelExtension& extension, ObjectModels& models)
   bool fits = extension.landmarks_before.size() == models.size() &&
               extension.observations.size() == models.size();
   for (std::size_t m = 0; fits && m < models.size(); ++m) {
-    fits = extension.landmarks_before[m] <= models[m].landmarks.size();
+    // The keypoints are not known here: only their indices' sign is checked.
+    fits =
+        extension.landmarks_before[m] <= models[m].landmarks.size() &&
+        observationProblem (models[m], std::numeric_limits<std::size_t>::max()).empty();
     for (const auto& [i, k] : extension.observations[m])
       fits = fits && i < models[m].instances.size();
   }
   if (!fits) {
-    PCL_ERROR ("[mid::retractModelExtension] The extension does not fit the %zu models "
-               "(another list of models, or models changed otherwise since).\n",
-               models.size());
+    PCL_ERROR (
+        "[mid::retractModelExtension] The extension does not fit the %zu models "
+        "(another list of models, models changed otherwise since, or observations "
+        "of missing landmarks).\n",
+        models.size());
     return false;
   }
   for (std::size_t m = 0; m < models.size(); ++m) {

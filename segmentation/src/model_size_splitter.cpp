@@ -13,12 +13,13 @@ namespace mid {
 
 namespace {
 
-/** The two groups of instances of one model that split it: `larger` and `smaller` hold
-  * indices into the model's instances.
+/** The two groups of instances of one model that split it, as indices into the model's
+  * instances: `first` grew from the largest group of one size, `second` from the largest
+  * among the rest (it has no more instances than `first`, whatever the sizes of the boxes).
   */
 struct SizeGroups
 {
-  std::vector<std::size_t> larger, smaller;
+  std::vector<std::size_t> first, second;
 };
 
 /** The number of the landmarks `instance` observes that some instance of `group` observes. */
@@ -50,37 +51,37 @@ findSizeGroups (const ObjectModel& model,
 {
   std::vector<std::size_t> measured = measuredInstances (extents);
   std::size_t first = 0, second = 0;
-  groups.larger = largestSizeGroup (extents, measured, agree, first);
-  if (groups.larger.size() < min_agreeing)
+  groups.first = largestSizeGroup (extents, measured, agree, first);
+  if (groups.first.size() < min_agreeing)
     return false;
   measured.erase (std::remove_if (measured.begin(),
                                   measured.end(),
                                   [&] (std::size_t i) {
-                                    return std::count (groups.larger.begin(),
-                                                       groups.larger.end(),
+                                    return std::count (groups.first.begin(),
+                                                       groups.first.end(),
                                                        i) > 0;
                                   }),
                   measured.end());
-  groups.smaller = largestSizeGroup (extents, measured, agree, second);
-  if (groups.smaller.size() < min_agreeing ||
+  groups.second = largestSizeGroup (extents, measured, agree, second);
+  if (groups.second.size() < min_agreeing ||
       !agree.differOnEveryEdge (extents[first].size, extents[second].size))
     return false;
 
   std::vector<std::size_t> others;
   for (std::size_t i = 0; i < model.instances.size(); ++i)
-    if (std::count (groups.larger.begin(), groups.larger.end(), i) == 0 &&
-        std::count (groups.smaller.begin(), groups.smaller.end(), i) == 0)
+    if (std::count (groups.first.begin(), groups.first.end(), i) == 0 &&
+        std::count (groups.second.begin(), groups.second.end(), i) == 0)
       others.push_back (i);
   const SizeGroups measured_groups = groups;
   for (const auto i : others) {
     const auto& instance = model.instances[i];
-    auto& group = sharedLandmarks (model, measured_groups.smaller, instance) >
-                          sharedLandmarks (model, measured_groups.larger, instance)
-                      ? groups.smaller
-                      : groups.larger;
+    auto& group = sharedLandmarks (model, measured_groups.second, instance) >
+                          sharedLandmarks (model, measured_groups.first, instance)
+                      ? groups.second
+                      : groups.first;
     group.push_back (i);
   }
-  for (auto* group : {&groups.larger, &groups.smaller})
+  for (auto* group : {&groups.first, &groups.second})
     std::sort (group->begin(), group->end());
   return true;
 }
@@ -114,7 +115,7 @@ ModelSizeSplitter::split (ObjectModels& models, std::size_t& added) const
   const SizeAgreement agree = agreement();
   ObjectModels kept, appended;
   for (std::size_t m = 0; m < models.size(); ++m) {
-    // A stack of parts to look at, each with the boxes of its instances; the larger group's
+    // A stack of parts to look at, each with the boxes of its instances; the first group's
     // part is pushed last, so that it comes out first and takes the model's place.
     std::vector<std::pair<ObjectModel, InstanceExtents>> pending;
     pending.emplace_back (models[m], extents[m]);
@@ -127,7 +128,7 @@ ModelSizeSplitter::split (ObjectModels& models, std::size_t& added) const
         parts.push_back (std::move (model));
         continue;
       }
-      for (const auto* group : {&groups.smaller, &groups.larger}) {
+      for (const auto* group : {&groups.second, &groups.first}) {
         ObjectModel part;
         extractModelPart (model, *group, part);
         InstanceExtents part_boxes;

@@ -142,8 +142,7 @@ surroundedShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
         ++around;
         const auto& point = organized[q];
         if (std::isfinite (point.z) &&
-            std::abs (plane.head<3>().dot (point.getVector3fMap()) + plane[3]) >
-                tolerance)
+            std::abs (planeDistance (plane, point.getVector3fMap())) > tolerance)
           ++occupied;
       }
   }

@@ -20,10 +20,9 @@ SupportPlaneMeasurement::planeMeasurementProblem (const ObjectModels& models) co
         std::abs (support_plane_.head<3>().norm() - 1.0f) < 1e-3f))
     return "the support plane given is neither zero nor a plane with a unit normal";
   for (const auto& model : models)
-    for (const auto& instance : model.instances)
-      for (const auto k : instance.keypoints)
-        if (k < 0 || static_cast<std::size_t> (k) >= keypoints_->size())
-          return "an instance observes a keypoint outside the input keypoints";
+    if (std::string problem = observationProblem (model, keypoints_->size());
+        !problem.empty())
+      return problem;
   return "";
 }
 

@@ -142,6 +142,19 @@ TEST (ModelBoxExtender, TakesNothingFromTheTable)
       mid::test::kSoyPrint, -0.16, 0.0, 10.0, {0.12, 0.09, 0.003}));
   const Boxes scene (boxes);
   ASSERT_GE (scene.on ({4}).size(), 20u) << "the mat shows texture";
+  // Some of the mat's keypoints lie in box 0 grown by 3 cm.
+  const Eigen::Isometry3d to_box = scene.scene.boxes[0].pose.inverse();
+  const Eigen::Vector3d reach =
+      0.5 * kPrintedBoxSize + Eigen::Vector3d::Constant (0.03);
+  std::size_t reached = 0;
+  for (const auto k : scene.on ({4})) {
+    const Eigen::Vector3d local =
+        to_box * (*scene.keypoints)[static_cast<std::size_t> (k)]
+                     .getVector3fMap()
+                     .cast<double>();
+    reached += (local.cwiseAbs() - reach).maxCoeff() <= 0.0 ? 1 : 0;
+  }
+  ASSERT_GE (reached, 3u);
   mid::ObjectModels models = {halfModel (scene, {0, 1})};
   mid::ModelBoxExtender wide = extenderFor (scene);
   wide.setMargin (0.03f);
@@ -175,11 +188,24 @@ TEST (ModelBoxExtender, RetractingKeepsOnlyWhatANewCopyObserves)
   }
   models[0].instances.push_back (found);
 
-  // Another list of models is refused, and nothing changes.
-  mid::ObjectModels two = {models[0], models[0]};
-  EXPECT_FALSE (mid::retractModelExtension (extension, two));
-  EXPECT_EQ (two[0].instances[0].keypoints.size(), first.keypoints.size());
-  EXPECT_EQ (two[0].landmarks.size(), extended.landmarks.size());
+  // Another list of models, an instance or landmark count it does not have, or an
+  // observation of a missing landmark are refused, and nothing changes.
+  const auto refused = [&] (const mid::ModelExtension& wrong,
+                            mid::ObjectModels changed) {
+    EXPECT_FALSE (mid::retractModelExtension (wrong, changed));
+    EXPECT_EQ (changed[0].instances[0].keypoints.size(), first.keypoints.size());
+    EXPECT_EQ (changed[0].landmarks.size(), extended.landmarks.size());
+  };
+  refused (extension, {models[0], models[0]});
+  mid::ModelExtension no_instance = extension;
+  no_instance.observations[0].emplace_back (7, 0);
+  refused (no_instance, models);
+  mid::ModelExtension more_landmarks = extension;
+  more_landmarks.landmarks_before[0] = extended.landmarks.size() + 1;
+  refused (more_landmarks, models);
+  mid::ObjectModels missing = models;
+  missing[0].instances[2].landmarks[0] = static_cast<int> (extended.landmarks.size());
+  EXPECT_FALSE (mid::retractModelExtension (extension, missing));
 
   ASSERT_TRUE (mid::retractModelExtension (extension, models));
   const mid::ObjectModel& model = models[0];
@@ -257,12 +283,16 @@ TEST (ModelBoxExtender, LeavesTheModelsWithoutASupportPlaneOrASize)
 
   // Two measured instances that must agree on a size, and disagree: no size, no extension.
   const Boxes other (fourBoxes ({0.15, 0.11, 0.06}));
-  mid::ObjectModels unsized = {halfModel (other, {0, 2})};
+  const mid::ObjectModels two_sizes = {halfModel (other, {0, 2})};
+  mid::ObjectModels unsized = two_sizes;
   mid::ModelBoxExtender strict = extenderFor (other);
   strict.setMinAgreeing (2);
-  const std::size_t landmarks = unsized[0].landmarks.size();
   ASSERT_TRUE (strict.extend (unsized, extension));
-  EXPECT_EQ (unsized[0].landmarks.size(), landmarks);
+  EXPECT_EQ (unsized[0].landmarks.size(), two_sizes[0].landmarks.size());
+  // One measured instance is enough by default: the same model is extended.
+  mid::ObjectModels sized = two_sizes;
+  ASSERT_TRUE (extenderFor (other).extend (sized, extension));
+  EXPECT_GT (sized[0].landmarks.size(), two_sizes[0].landmarks.size());
 }
 
 TEST (ModelBoxExtender, RefusesBadInputAndLeavesTheModels)
@@ -286,6 +316,13 @@ TEST (ModelBoxExtender, RefusesBadInputAndLeavesTheModels)
   mid::ModelBoxExtender no_keypoints = extenderFor (scene);
   no_keypoints.setInputKeypoints (nullptr);
   refuses (no_keypoints);
+
+  mid::ObjectModels outside = original;
+  outside[0].instances[0].keypoints[0] =
+      static_cast<pcl::index_t> (scene.keypoints->size());
+  mid::ModelExtension extension;
+  EXPECT_FALSE (extenderFor (scene).extend (outside, extension));
+  EXPECT_EQ (outside[0].landmarks.size(), original[0].landmarks.size());
 }
 
 } // namespace

@@ -9,6 +9,13 @@
 
 namespace mid {
 
+/** \brief Signed distance (metres) of point p from the plane (unit normal n, offset d),
+  * n . p + d: positive on the side the normal points to (towards the camera for the planes of
+  * fitSupportPlane()).
+  */
+float
+planeDistance (const Eigen::Vector4f& plane, const Eigen::Vector3f& p);
+
 /** \brief The plane most of an organized frame lies on (a table, a bin's floor), as (unit
   * normal towards the camera, offset) with normal . x + offset = 0.
   * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)

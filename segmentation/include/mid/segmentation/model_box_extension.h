@@ -45,7 +45,8 @@ struct ModelExtension
   *    whose box it lies deepest in: a new landmark at the keypoint (in the model frame, by that
   *    instance's pose) with its descriptor, observed by that instance.
   *
-  * A model without a size (no instance measured) is not extended. The added landmarks rest on
+  * A model without a size (fewer measured instances agree on one than setMinAgreeing() asks,
+  * default 1) is not extended. The added landmarks rest on
   * one view and on the instance's pose: meant for a search of more copies (the guided search),
   * after which retractModelExtension() takes them out again (an instance would otherwise hold
   * keypoints of a neighbour that its grown box reaches, and the model points of it), but for
@@ -89,7 +90,8 @@ public:
 
   /** \brief Extend the models by the keypoints their copies show inside their boxes.
     * \param[in,out] models the frame's models; landmarks, descriptors and observations are
-    * appended, nothing else changes. Without a support plane nothing changes.
+    * appended and the diameters updated (the instances' rms_error is not). Without a support
+    * plane nothing changes.
     * \param[out] extension what was added, for retractModelExtension(); one entry per model
     * \return false (with a PCL_ERROR, models unchanged, extension empty) on missing or
     * inconsistent input, a parameter out of range, or an observation outside the keypoints
@@ -112,6 +114,8 @@ private:
   * \param[in,out] models the models, extended and possibly given new instances since, in the
   * same order
   * \return false (with a PCL_ERROR, models unchanged) if `extension` does not fit the models
+  * (their number, an instance or landmark count it names, an observation of a missing
+  * landmark)
   */
 bool
 retractModelExtension (const ModelExtension& extension, ObjectModels& models);

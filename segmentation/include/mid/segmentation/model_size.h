@@ -155,8 +155,8 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    ModelSizes& sizes);
 
 /** \brief What the steps that measure the boxes of models on the support plane and compare
-  * their sizes share (ModelSizeMerger, SizeInstanceSearch): the SupportPlaneMeasurement, and
-  * when two sizes agree.
+  * their sizes share (ModelSizeMerger, ModelSizeSplitter, ModelBoxExtender,
+  * SizeInstanceSearch): the SupportPlaneMeasurement, and when two sizes agree.
   */
 class ModelSizeMeasurement : public SupportPlaneMeasurement
 {

@@ -47,8 +47,8 @@ public:
   ModelSizeSplitter() { min_agreeing_ = 2; }
 
   /** \brief Split the models whose copies occupy boxes of two sizes.
-    * \param[in,out] models the frame's models; a split model is replaced by its part of the
-    * larger size group, and the other part is appended. Without a support plane nothing
+    * \param[in,out] models the frame's models; a split model is replaced by the part of its
+    * size group with more instances, and the other part is appended. Without a support plane nothing
     * changes.
     * \param[out] added the number of models added (0 on failure)
     * \return false (with a PCL_ERROR, models unchanged) on missing or inconsistent input, a

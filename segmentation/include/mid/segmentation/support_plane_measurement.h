@@ -152,7 +152,8 @@ protected:
 
   /** \brief What is wrong with the keypoints, the keypoint surface, the parameters above (a
     * support plane given that is neither zero nor a finite plane with a unit normal) or
-    * `models` (an observation outside the keypoints); empty if nothing.
+    * `models` (observationProblem(): an observation outside the keypoints or the landmarks);
+    * empty if nothing.
     */
   std::string
   planeMeasurementProblem (const ObjectModels& models) const;
