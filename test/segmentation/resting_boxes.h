@@ -112,6 +112,29 @@ struct RestingBoxes : RenderedKeypoints
   }
 };
 
+/** A step that measures boxes on the table (a SupportPlaneMeasurement), given the scene's
+  * keypoints and keypoint surface.
+  */
+template <typename Step>
+Step
+measuringStep (const RestingBoxes& scene)
+{
+  Step step;
+  step.setInputKeypoints (scene.keypoints);
+  step.setKeypointSurface (scene.surface);
+  return step;
+}
+
+/** measuringStep(), for a step that also keeps the keypoints' descriptors. */
+template <typename Step>
+Step
+describingStep (const RestingBoxes& scene)
+{
+  Step step = measuringStep<Step> (scene);
+  step.setInputDescriptors (scene.descriptors);
+  return step;
+}
+
 /** Boxes 0 and 1 (one print) apart, boxes 2 and 3 (another print) touching along their long
   * edges, so that their tops join in one flat surface.
   */

@@ -56,11 +56,7 @@ halfModel (const Boxes& scene, const std::vector<int>& boxes)
 mid::ModelBoxExtender
 extenderFor (const Boxes& scene)
 {
-  mid::ModelBoxExtender extender;
-  extender.setInputKeypoints (scene.keypoints);
-  extender.setInputDescriptors (scene.descriptors);
-  extender.setKeypointSurface (scene.surface);
-  return extender;
+  return mid::test::describingStep<mid::ModelBoxExtender> (scene);
 }
 
 /** Height of a point above the table (which faces the camera at kTableDepth). */

@@ -32,10 +32,7 @@ using Boxes = mid::test::RestingBoxes;
 mid::ModelSizeMerger
 mergerFor (const Boxes& scene)
 {
-  mid::ModelSizeMerger merger;
-  merger.setInputKeypoints (scene.keypoints);
-  merger.setKeypointSurface (scene.surface);
-  return merger;
+  return mid::test::measuringStep<mid::ModelSizeMerger> (scene);
 }
 
 TEST (InstanceExtent, MeasuresABoxRestingOnTheTable)

@@ -24,10 +24,7 @@ const Eigen::Vector3d kLargerBox{0.15, 0.11, 0.06};
 mid::ModelSizeSplitter
 splitterFor (const Boxes& scene)
 {
-  mid::ModelSizeSplitter splitter;
-  splitter.setInputKeypoints (scene.keypoints);
-  splitter.setKeypointSurface (scene.surface);
-  return splitter;
+  return mid::test::measuringStep<mid::ModelSizeSplitter> (scene);
 }
 
 /** The boxes the instances of `model` lie on (every instance on one box). */

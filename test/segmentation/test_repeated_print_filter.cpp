@@ -101,10 +101,7 @@ modelWithRepeat (const Boxes& scene, const Eigen::Matrix4f& second_pose, bool wi
 mid::RepeatedPrintFilter
 filterIn (const Boxes& scene)
 {
-  mid::RepeatedPrintFilter filter;
-  filter.setInputKeypoints (scene.keypoints);
-  filter.setKeypointSurface (scene.surface);
-  return filter;
+  return mid::test::measuringStep<mid::RepeatedPrintFilter> (scene);
 }
 
 /** Filter one model; its instances afterwards (none if the model went), and the count. */

@@ -37,11 +37,7 @@ twoFlatOneOnItsSide ()
 mid::SizeInstanceSearch
 searchIn (const Boxes& scene)
 {
-  mid::SizeInstanceSearch search;
-  search.setInputKeypoints (scene.keypoints);
-  search.setInputDescriptors (scene.descriptors);
-  search.setKeypointSurface (scene.surface);
-  return search;
+  return mid::test::describingStep<mid::SizeInstanceSearch> (scene);
 }
 
 /** The search adds nothing: it succeeds, counts none and leaves the model as it was. */
