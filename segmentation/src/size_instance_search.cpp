@@ -16,6 +16,69 @@ namespace mid {
 
 namespace {
 
+/** How far outside a found copy's box (its pose times its model's box) the points it claims
+  * reach (metres): what its pose may be off by.
+  */
+constexpr float kClaimMargin = 0.002f;
+
+/** The box of a found copy of a measured model: camera -> box frame, and half its edges. */
+struct FoundCopyBox
+{
+  Eigen::Matrix4f to_box = Eigen::Matrix4f::Identity();
+  Eigen::Array3f half = Eigen::Array3f::Zero();
+
+  bool
+  holds (const Eigen::Vector3f& point, float margin) const
+  {
+    const Eigen::Vector3f local =
+        to_box.topLeftCorner<3, 3>() * point + to_box.topRightCorner<3, 1>();
+    return (local.array().abs() < half + margin).all();
+  }
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+using FoundCopyBoxes =
+    std::vector<FoundCopyBox, Eigen::aligned_allocator<FoundCopyBox>>;
+
+/** The boxes of the found copies of the models with a size. */
+FoundCopyBoxes
+foundCopyBoxes (const ObjectModels& models, const ModelSizes& sizes)
+{
+  FoundCopyBoxes boxes;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    if (!sizes[m].valid)
+      continue;
+    for (const auto& instance : models[m].instances) {
+      boxes.emplace_back();
+      boxes.back().to_box = (instance.pose * sizes[m].box_in_model).inverse();
+      boxes.back().half = 0.5f * sizes[m].size.array();
+    }
+  }
+  return boxes;
+}
+
+/** `organized` without the points inside the found copies' boxes (NaN there): a copy
+  * touching a found one, flush, then grows over its own surface alone instead of over the
+  * found copy's too.
+  */
+pcl::PointCloud<pcl::PointXYZ>
+withoutFoundCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                    const FoundCopyBoxes& boxes)
+{
+  pcl::PointCloud<pcl::PointXYZ> unclaimed = organized;
+  for (auto& point : unclaimed.points) {
+    if (!std::isfinite (point.z))
+      continue;
+    for (const auto& box : boxes)
+      if (box.holds (point.getVector3fMap(), kClaimMargin)) {
+        point.x = point.y = point.z = std::numeric_limits<float>::quiet_NaN();
+        break;
+      }
+  }
+  return unclaimed;
+}
+
 /** Join the seeds whose surfaces touch: two 4-neighbouring pixels of two surfaces whose points
   * are closer than max_step. A seed whose surface is empty (its pixel was another seed's, as
   * SIFT puts keypoints of several orientations on one pixel) joins the seed that holds its
@@ -164,6 +227,89 @@ struct FreeObject
 
 using FreeObjects = std::vector<FreeObject, Eigen::aligned_allocator<FreeObject>>;
 
+/** The seeds the objects grow from: every instance (its keypoints' pixels), then every
+  * keypoint no instance observes.
+  */
+struct ObjectSeeds
+{
+  std::vector<pcl::Indices> pixels;
+  std::size_t instances = 0;  ///< the first seeds, one per instance
+  pcl::Indices free;          ///< the keypoint of each seed after them
+  std::vector<bool> observed; ///< by keypoint: an instance observes it
+};
+
+ObjectSeeds
+objectSeeds (const ObjectModels& models, const pcl::Indices& keypoint_pixels)
+{
+  ObjectSeeds seeds;
+  seeds.observed.assign (keypoint_pixels.size(), false);
+  for (const auto& model : models)
+    for (const auto& instance : model.instances)
+      for (const auto k : instance.keypoints)
+        seeds.observed[static_cast<std::size_t> (k)] = true;
+  seeds.pixels = instanceSeedPixels (models, keypoint_pixels);
+  seeds.instances = seeds.pixels.size();
+  for (std::size_t k = 0; k < keypoint_pixels.size(); ++k)
+    if (!seeds.observed[k]) {
+      seeds.free.push_back (static_cast<pcl::index_t> (k));
+      seeds.pixels.push_back ({keypoint_pixels[k]});
+    }
+  return seeds;
+}
+
+/** How the surfaces grow (growInstanceSurfaces()). */
+struct Growth
+{
+  float max_step, max_radius, plane_tolerance;
+};
+
+/** The objects of free keypoints alone (at least `min_keypoints`) whose surfaces, grown in
+  * `cloud` (`organized` or a part of it), give a box that holds no instance's keypoint.
+  */
+bool
+freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+             const pcl::PointCloud<pcl::PointXYZ>& organized,
+             const Eigen::Vector4f& plane,
+             const ObjectSeeds& seeds,
+             const KeypointCloud& keypoints,
+             const Growth& growth,
+             int min_keypoints,
+             FreeObjects& objects)
+{
+  objects.clear();
+  std::vector<pcl::Indices> surfaces;
+  if (!growInstanceSurfaces (cloud,
+                             plane,
+                             seeds.pixels,
+                             growth.max_step,
+                             growth.max_radius,
+                             growth.plane_tolerance,
+                             surfaces))
+    return false;
+  detail::DisjointSets sets (seeds.pixels.size());
+  joinTouchingSurfaces (cloud, seeds.pixels, surfaces, growth.max_step, sets);
+
+  // An instance's seed is the smallest of its set.
+  std::vector<std::vector<std::size_t>> members (seeds.pixels.size());
+  for (std::size_t s = seeds.instances; s < seeds.pixels.size(); ++s)
+    if (sets.find (s) >= seeds.instances)
+      members[sets.find (s)].push_back (s);
+  for (const auto& object : members) {
+    if (object.size() < static_cast<std::size_t> (min_keypoints))
+      continue;
+    FreeObject free_object;
+    for (const std::size_t s : object) {
+      free_object.pixels.insert (
+          free_object.pixels.end(), surfaces[s].begin(), surfaces[s].end());
+      free_object.keypoints.push_back (seeds.free[s - seeds.instances]);
+    }
+    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent) &&
+        !boxHoldsObserved (free_object.extent, keypoints, seeds.observed, kBoxMargin))
+      objects.push_back (free_object);
+  }
+  return true;
+}
+
 /** Group the objects whose sizes agree with the first of the group (most keypoints first);
   * groups of one are dropped.
   */
@@ -239,68 +385,64 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
       }))
     return true;
 
-  // Seeds: every instance (its keypoints' pixels), then every keypoint no instance observes.
-  std::vector<bool> observed (keypoints_->size(), false);
-  for (const auto& model : models)
-    for (const auto& instance : model.instances)
-      for (const auto k : instance.keypoints)
-        observed[static_cast<std::size_t> (k)] = true;
-  std::vector<pcl::Indices> seeds =
-      instanceSeedPixels (models, surface_.keypoint_pixels);
-  const std::size_t instance_seeds = seeds.size();
-  pcl::Indices free;
-  for (std::size_t k = 0; k < observed.size(); ++k)
-    if (!observed[k]) {
-      free.push_back (static_cast<pcl::index_t> (k));
-      seeds.push_back ({surface_.keypoint_pixels[k]});
-    }
-  std::vector<pcl::Indices> surfaces;
-  if (!growInstanceSurfaces (
-          organized, plane, seeds, max_step_, max_radius_, plane_tolerance_, surfaces))
+  // The objects as they lie, and those beside the found copies of a measured model, grown
+  // with the points inside those copies' boxes left out.
+  const ObjectSeeds seeds = objectSeeds (models, surface_.keypoint_pixels);
+  const Growth growth{max_step_, max_radius_, plane_tolerance_};
+  FreeObjects free_objects, beside_found;
+  const auto boxes = foundCopyBoxes (models, sizes);
+  if (!freeObjects (organized,
+                    organized,
+                    plane,
+                    seeds,
+                    *keypoints_,
+                    growth,
+                    min_keypoints_,
+                    free_objects) ||
+      (!boxes.empty() && !freeObjects (withoutFoundCopies (organized, boxes),
+                                       organized,
+                                       plane,
+                                       seeds,
+                                       *keypoints_,
+                                       growth,
+                                       min_keypoints_,
+                                       beside_found)))
     return false;
-  detail::DisjointSets sets (seeds.size());
-  joinTouchingSurfaces (organized, seeds, surfaces, max_step_, sets);
 
-  // Objects of free keypoints alone: an instance's seed is the smallest of its set.
-  std::vector<std::vector<std::size_t>> objects (seeds.size());
-  for (std::size_t s = instance_seeds; s < seeds.size(); ++s)
-    if (sets.find (s) >= instance_seeds)
-      objects[sets.find (s)].push_back (s);
-  FreeObjects free_objects;
-  for (const auto& object : objects) {
-    if (object.size() < static_cast<std::size_t> (min_keypoints_))
-      continue;
-    FreeObject free_object;
-    for (const std::size_t s : object) {
-      free_object.pixels.insert (
-          free_object.pixels.end(), surfaces[s].begin(), surfaces[s].end());
-      free_object.keypoints.push_back (free[s - instance_seeds]);
-    }
-    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent) &&
-        !boxHoldsObserved (free_object.extent, *keypoints_, observed, kBoxMargin))
-      free_objects.push_back (free_object);
-  }
-
-  // A copy of a model's size joins it; an object standing alone, of no model's size, may
-  // found a model with others of its size.
+  // A copy of a model's size joins it (measured beside the found copies first), unless one of
+  // its keypoints went to another copy already.
+  std::vector<bool> taken (keypoints_->size(), false);
+  const auto untaken = [&taken] (const FreeObject& object) {
+    return std::none_of (
+        object.keypoints.begin(), object.keypoints.end(), [&taken] (pcl::index_t k) {
+          return taken[static_cast<std::size_t> (k)];
+        });
+  };
+  const auto joinModelOfItsSize = [&] (const FreeObject& object) {
+    const int m = modelOfSize (object.extent.size, sizes, agree);
+    if (m < 0 || !untaken (object))
+      return m;
+    addInstanceOfKeypoints (
+        *keypoints_,
+        *descriptors_,
+        object.keypoints,
+        object.extent.pose * sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
+        models[static_cast<std::size_t> (m)]);
+    for (const auto k : object.keypoints)
+      taken[static_cast<std::size_t> (k)] = true;
+    ++found;
+    return m;
+  };
+  for (const FreeObject& object : beside_found)
+    joinModelOfItsSize (object);
+  // An object standing alone, of no model's size, may found a model with others of its size.
   std::vector<std::size_t> alone;
   for (std::size_t o = 0; o < free_objects.size(); ++o) {
     const FreeObject& object = free_objects[o];
-    const int m = modelOfSize (object.extent.size, sizes, agree);
-    if (m >= 0) {
-      addInstanceOfKeypoints (
-          *keypoints_,
-          *descriptors_,
-          object.keypoints,
-          object.extent.pose *
-              sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
-          models[static_cast<std::size_t> (m)]);
-      ++found;
-    }
-    else if (discover_models_ && object.extent.size.minCoeff() >= min_model_edge_ &&
-             surroundedShare (
-                 organized, plane, object.pixels, 2.0f * plane_tolerance_) <=
-                 max_surrounded_share_)
+    if (joinModelOfItsSize (object) < 0 && discover_models_ && untaken (object) &&
+        object.extent.size.minCoeff() >= min_model_edge_ &&
+        surroundedShare (organized, plane, object.pixels, 2.0f * plane_tolerance_) <=
+            max_surrounded_share_)
       alone.push_back (o);
   }
   // The model frame is the first copy's box frame (centred on the landmarks after).

@@ -119,6 +119,32 @@ TEST (SizeInstanceSearch, LeavesTouchingCopiesMeasuredAsOneAlone)
   expectNothingFound (searchIn (scene), scene.modelOf ({0, 1}));
 }
 
+TEST (SizeInstanceSearch, MeasuresACopyTouchingAFoundOneOutsideTheFoundOnesBox)
+{
+  // Boxes 2 and 3 touch along their long edges, their tops one flat surface. Box 2 is a found
+  // copy: its box (its pose times the model's box) holds its part of the surface, and box 3
+  // is measured on the rest alone.
+  const Boxes scene (twoApartTwoTouching());
+  mid::ObjectModels models = {scene.modelOf ({0, 1, 2})};
+  std::size_t found = 0;
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  EXPECT_EQ (found, 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  const mid::ModelInstance& copy = models[0].instances[3];
+  EXPECT_EQ (scene.boxOf (copy.keypoints), 3);
+  const Eigen::Isometry3d& truth = scene.scene.boxes[3].pose;
+  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
+  EXPECT_LT (
+      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+      0.004f);
+
+  // A shorter box in its place is no copy.
+  std::vector<mid::test::BoxSpec> boxes = twoApartTwoTouching();
+  boxes[3] = restingBox (kSoyPrint, 0.0, 0.19, 180.0, {0.09, 0.09, 0.04});
+  const Boxes shorter (boxes);
+  expectNothingFound (searchIn (shorter), shorter.modelOf ({0, 1, 2}));
+}
+
 TEST (SizeInstanceSearch, RefusesBadInputAndLeavesTheModels)
 {
   const Boxes scene (twoFlatOneOnItsSide());

@@ -22,26 +22,31 @@ namespace mid {
   *    copies agree on one size;
   * 2. grows the surfaces of all instances and of every keypoint that no instance observes at
   *    once (growInstanceSurfaces(): stopped at creases and depth steps), and joins the
-  *    surfaces that touch into objects;
+  *    surfaces that touch into objects; and once more with the points inside the boxes of
+  *    the found copies of the measured models (their poses times the model's box, grown by
+  *    2 mm) left out, so that a copy touching a found one flush, their surfaces one, is
+  *    measured on its own part alone;
   * 3. fits a box to each object that holds no instance's keypoint and at least
   *    `min_keypoints` free keypoints, and gives it to the model whose size it agrees with
-  *    (the closest, edge by edge, if several do) as a new instance: its pose is the one that
-  *    brings the model's box onto the object's, right up to the box's symmetries (a half
-  *    turn of a box, a quarter turn of a square one; which face the copy shows is what is
-  *    not known); its free keypoints become landmarks of the model, with their descriptors.
+  *    (the closest, edge by edge, if several do) as a new instance, the objects beside the
+  *    found copies first, none that shares a keypoint with an instance added before. Its
+  *    pose is the one that brings the model's box onto the object's, right up to the box's
+  *    symmetries (a half turn of a box, a quarter turn of a square one; which face the copy
+  *    shows is what is not known); its free keypoints become landmarks of the model, with
+  *    their descriptors;
+  * 4. with setDiscoverModels(), groups the objects (as they lie) of no model's size, sharing
+  *    no keypoint with an instance, that stand alone on the plane (at most
+  *    `max_surrounded_share` of the pixels around their surface hold something else than
+  *    the plane: not in a pile, a bin or a row of touching objects) and whose shortest edge
+  *    is at least `min_model_edge`, by size: two or more of one size become a new model, in
+  *    the box frame of the copy with the most keypoints, each copy an instance posed by its
+  *    box (up to the box's symmetries), all their keypoints landmarks.
   *
-  * 4. with setDiscoverModels(), groups the objects of no model's size that stand alone on the
-  *    plane (at most `max_surrounded_share` of the pixels around their surface hold something
-  *    else than the plane: not in a pile, a bin or a row of touching objects) and whose
-  *    shortest edge is at least `min_model_edge`, by size: two or more of one size become a
-  *    new model, in the box frame of the copy with the most keypoints, each copy an instance
-  *    posed by its box (up to the box's symmetries), all their keypoints landmarks.
-  *
-  * An object touching another is measured with it and agrees with no model's size; an object
-  * occluded in part is measured too small: both are left alone. A product of another type
-  * that has the same size within the tolerance is taken for a copy: the step trades those for
-  * the copies that show an unmatched face, far more common on a table of several copies of
-  * one product. The models of step 4 rest on the size alone: two different products of one
+  * An object touching another (other than a found copy of a measured model) is measured with
+  * it and agrees with no model's size; an object occluded in part is measured too small:
+  * both are left alone. A product of another type that has the same size within the
+  * tolerance is taken for a copy: the step trades those for the copies that show an
+  * unmatched face, far more common on a table of several copies of one product. The models of step 4 rest on the size alone: two different products of one
   * size standing apart become one model, which is why it is asked for separately, and why it
   * keeps to objects that stand alone (in a pile or a bin the surfaces are fragments, and small
   * fragments agree in size by chance) and to edges that the tolerance measures well.
