@@ -11,7 +11,8 @@
 #   pcl_bottle_pack/, pcl_milk_scene/, mosd_clutter/  organized PCD files, metres
 # A folder that is missing is skipped with a note; a frame that fails is reported in the table.
 # The peers run with the parameters of scripts/benchmark_methods.sh. MID_BUILD_DIR: build (build).
-# MID_REAL_METHODS: the methods (default "triplets gcg hough").
+# MID_REAL_METHODS: the methods (default "triplets gcg hough"). MID_DISCOVERY_OPTIONS: more
+# discovery options for every method (none; e.g. -size_surrounded 0.3), as for benchmark.sh.
 set -euo pipefail
 shopt -s nullglob
 if [ $# -ne 2 ]; then
@@ -35,7 +36,7 @@ run_frame() {
   shift 2
   for method in $METHODS; do
     picture="$OUT/$(echo "$name" | tr / _)_${method}.png"
-    options=$(method_options "$method")
+    options="$(method_options "$method") ${MID_DISCOVERY_OPTIONS:-}"
     # shellcheck disable=SC2086 # the options are several words
     if ! log=$("$APP" "$@" -overlay "$picture" $options 2>&1); then
       echo "| $name | $shows | $method | failed: $(echo "$log" | tail -1) | | |"

@@ -381,7 +381,7 @@ struct DiscoveryParameters
     */
   ///@{
   bool size_discovery = true;
-  float size_discovery_max_surrounded = 0.2f;
+  float size_discovery_max_surrounded = 0.25f;
   float size_discovery_min_edge = 0.03f;
   ///@}
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the

@@ -105,7 +105,7 @@ public:
 
   /** \brief Largest share of the pixels around an object's surface (within 4 pixels) that may
     * hold a point off the support plane (farther than twice the plane tolerance from it) for
-    * the object to stand alone (default 0.2, in [0, 1]; missing depth counts as free).
+    * the object to stand alone (default 0.25, in [0, 1]; missing depth counts as free).
     * Isolated cartons on a table measure 0 to 0.01, the fragments of a pile 0.29 to 1.
     */
   ///@{
@@ -159,7 +159,7 @@ private:
   SIFTDescriptorCloud::ConstPtr descriptors_;
   int min_keypoints_ = 2;
   bool discover_models_ = false;
-  float max_surrounded_share_ = 0.2f;
+  float max_surrounded_share_ = 0.25f;
   float min_model_edge_ = 0.03f;
 };
 
