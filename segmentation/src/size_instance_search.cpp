@@ -21,8 +21,10 @@ namespace {
   */
 constexpr float kClaimMargin = 0.002f;
 
-/** The box of a found copy of a measured model: camera -> box frame, and half its edges. */
-struct FoundCopyBox
+/** A box in the camera frame (camera -> box frame, and half its edges), and the test of the
+  * points inside it.
+  */
+struct OrientedBox
 {
   Eigen::Matrix4f to_box = Eigen::Matrix4f::Identity();
   Eigen::Array3f half = Eigen::Array3f::Zero();
@@ -38,14 +40,23 @@ struct FoundCopyBox
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
-using FoundCopyBoxes =
-    std::vector<FoundCopyBox, Eigen::aligned_allocator<FoundCopyBox>>;
+using OrientedBoxes = std::vector<OrientedBox, Eigen::aligned_allocator<OrientedBox>>;
+
+/** The box an object occupies (fitInstanceBox()). */
+OrientedBox
+orientedBox (const InstanceExtent& extent)
+{
+  OrientedBox box;
+  box.to_box = extent.pose.inverse();
+  box.half = 0.5f * extent.size.array();
+  return box;
+}
 
 /** The boxes of the found copies of the models with a size. */
-FoundCopyBoxes
+OrientedBoxes
 foundCopyBoxes (const ObjectModels& models, const ModelSizes& sizes)
 {
-  FoundCopyBoxes boxes;
+  OrientedBoxes boxes;
   for (std::size_t m = 0; m < models.size(); ++m) {
     if (!sizes[m].valid)
       continue;
@@ -64,7 +75,7 @@ foundCopyBoxes (const ObjectModels& models, const ModelSizes& sizes)
   */
 pcl::PointCloud<pcl::PointXYZ>
 withoutFoundCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                    const FoundCopyBoxes& boxes)
+                    const OrientedBoxes& boxes)
 {
   pcl::PointCloud<pcl::PointXYZ> unclaimed = organized;
   for (auto& point : unclaimed.points) {
@@ -128,17 +139,10 @@ boxHoldsObserved (const InstanceExtent& box,
                   const std::vector<bool>& observed,
                   float margin)
 {
-  const Eigen::Matrix4f to_box = box.pose.inverse();
-  const Eigen::Array3f inner = 0.5f * box.size.array() - margin;
-  for (std::size_t k = 0; k < keypoints.size(); ++k) {
-    if (!observed[k])
-      continue;
-    const Eigen::Vector3f local =
-        to_box.topLeftCorner<3, 3>() * keypoints[k].getVector3fMap() +
-        to_box.topRightCorner<3, 1>();
-    if ((local.array().abs() < inner).all())
+  const OrientedBox inner = orientedBox (box);
+  for (std::size_t k = 0; k < keypoints.size(); ++k)
+    if (observed[k] && inner.holds (keypoints[k].getVector3fMap(), -margin))
       return true;
-  }
   return false;
 }
 
@@ -172,17 +176,25 @@ constexpr float kBoxMargin = 0.005f;
 /** Pixels around an object's surface (within this many of it) that tell what it stands on. */
 constexpr int kRingPixels = 4;
 
-/** Share of the pixels around `pixels` (within kRingPixels of them, not among them) that hold
-  * a point off the support plane (farther than `tolerance` from it): where the object leans on,
-  * lies under or stands beside something else. Missing depth (the shadow beside an object)
-  * counts as free. 1 if no pixel lies around.
+/** How far outside an object's box a point around it may lie and still be the object's own
+  * (metres): the steep sides of a can, where its surface did not grow.
+  */
+constexpr float kOwnPointMargin = 0.003f;
+
+/** Share of the pixels around an object's surface (within kRingPixels of it, not on it) that
+  * hold a point off the support plane (farther than `tolerance` from it) and outside the
+  * object's box (grown by kOwnPointMargin): where the object leans on, lies under or stands
+  * beside something else. Missing depth (the shadow beside an object) counts as free. 1 if
+  * no pixel lies around.
   */
 float
 surroundedShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
                  const Eigen::Vector4f& plane,
-                 const pcl::Indices& pixels,
+                 const InstanceExtent& object,
                  float tolerance)
 {
+  const pcl::Indices& pixels = object.surface;
+  const OrientedBox own = orientedBox (object);
   const int width = static_cast<int> (organized.width);
   const int height = static_cast<int> (organized.height);
   std::vector<std::uint8_t> visited (organized.size(), 0);
@@ -205,7 +217,8 @@ surroundedShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
         ++around;
         const auto& point = organized[q];
         if (std::isfinite (point.z) &&
-            std::abs (planeDistance (plane, point.getVector3fMap())) > tolerance)
+            std::abs (planeDistance (plane, point.getVector3fMap())) > tolerance &&
+            !own.holds (point.getVector3fMap(), kOwnPointMargin))
           ++occupied;
       }
   }
@@ -441,7 +454,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     const FreeObject& object = free_objects[o];
     if (joinModelOfItsSize (object) < 0 && discover_models_ && untaken (object) &&
         object.extent.size.minCoeff() >= min_model_edge_ &&
-        surroundedShare (organized, plane, object.pixels, 2.0f * plane_tolerance_) <=
+        surroundedShare (organized, plane, object.extent, 2.0f * plane_tolerance_) <=
             max_surrounded_share_)
       alone.push_back (o);
   }

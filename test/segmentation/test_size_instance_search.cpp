@@ -288,3 +288,19 @@ TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAlone)
     boxes.insert (scene.boxOf (instance.keypoints));
   EXPECT_EQ (boxes, (std::set<int>{1, 2}));
 }
+
+TEST (SizeInstanceSearch, TallObjectsStandAloneThoughTheirSidesShow)
+{
+  // Two tall boxes of one size, far from the image centre: the camera sees their sides,
+  // where the top's surface does not grow. Those points are the boxes' own, not something
+  // they stand beside.
+  const Eigen::Vector3d tall (0.12, 0.09, 0.12);
+  const Boxes scene ({restingBox (kApplePrint, -0.24, -0.15, 10.0, tall),
+                      restingBox (kSoyPrint, 0.24, 0.15, -35.0, tall)});
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  std::size_t found = 0;
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, 2u);
+}

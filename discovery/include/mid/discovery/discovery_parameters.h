@@ -375,9 +375,9 @@ struct DiscoveryParameters
     * copies showing the same surface, by size alone (not in the paper;
     * SizeInstanceSearch::setDiscoverModels()): two or more objects of no model's size, each
     * standing alone on the support plane (at most size_discovery_max_surrounded, in [0, 1],
-    * of the pixels around it hold something else), with a shortest edge of at least
-    * size_discovery_min_edge (metres, >= 0) and sizes that agree, become a model. Two
-    * different products of one size standing apart become one model.
+    * of the pixels around it hold something else than the plane and its own box), with a
+    * shortest edge of at least size_discovery_min_edge (metres, >= 0) and sizes that agree,
+    * become a model. Two different products of one size standing apart become one model.
     */
   ///@{
   bool size_discovery = true;

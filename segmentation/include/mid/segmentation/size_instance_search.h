@@ -37,7 +37,8 @@ namespace mid {
   * 4. with setDiscoverModels(), groups the objects (as they lie) of no model's size, sharing
   *    no keypoint with an instance, that stand alone on the plane (at most
   *    `max_surrounded_share` of the pixels around their surface hold something else than
-  *    the plane: not in a pile, a bin or a row of touching objects) and whose shortest edge
+  *    the plane and the object's own box: not in a pile, a bin or a row of touching
+  *    objects) and whose shortest edge
   *    is at least `min_model_edge`, by size: two or more of one size become a new model, in
   *    the box frame of the copy with the most keypoints, each copy an instance posed by its
   *    box (up to the box's symmetries), all their keypoints landmarks.
@@ -104,9 +105,11 @@ public:
   ///@}
 
   /** \brief Largest share of the pixels around an object's surface (within 4 pixels) that may
-    * hold a point off the support plane (farther than twice the plane tolerance from it) for
-    * the object to stand alone (default 0.25, in [0, 1]; missing depth counts as free).
-    * Isolated cartons on a table measure 0 to 0.01, the fragments of a pile 0.29 to 1.
+    * hold a point off the support plane (farther than twice the plane tolerance from it) and
+    * outside the object's box (grown by 3 mm: the steep sides of a can, where its surface
+    * did not grow, are its own) for the object to stand alone (default 0.25, in [0, 1];
+    * missing depth counts as free). Isolated cartons on a table measure 0 to 0.01, the
+    * fragments of a pile 0.29 to 1 (session 29, before the own box was left out).
     */
   ///@{
   void
