@@ -657,3 +657,35 @@ TEST (MultiInstanceDiscovery, CutsARowAtTheGapsTheTableShowsNotInsideThePrint)
       mid::test::renderBoxes (rowOfBoxes (kJuice, 5, -0.25, 0.13, 0.85, 0.0), 0.9);
   expectOneInstancePerBox (scene, discover (scene));
 }
+
+TEST (MultiInstanceDiscovery, FindsACopyTouchingAFoundOneFlushByItsSize)
+{
+  // Three cookie boxes apart make a model by their print. A juice box of their size lies
+  // against the third, flush, their tops one flat surface: its print matches nothing, and
+  // only its size, measured beside the found copy's box, makes it the model's fourth copy.
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  const auto scene =
+      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.16, -0.1, z, 10.0)},
+                               {kCookies, size, boxPose (0.16, -0.12, z, -35.0)},
+                               {kCookies, size, boxPose (0.0, 0.05, z, 0.0)},
+                               {kJuice, size, boxPose (0.0, 0.14, z, 180.0)}},
+                              0.95);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters without_size;
+  without_size.size_search = false;
+  discovery.setParameters (without_size);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  auto boxes = boxesOf (scene, result, result.models[0]);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2}));
+
+  discovery.setParameters (mid::DiscoveryParameters());
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  boxes = boxesOf (scene, result, result.models[0]);
+  EXPECT_EQ (boxes.size(), 4u);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
+}
