@@ -1,5 +1,6 @@
 #include "disjoint_sets.h"
 
+#include <mid/segmentation/footprint_split.h>
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size.h>
 #include <mid/segmentation/size_instance_search.h>
@@ -323,6 +324,84 @@ freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   return true;
 }
 
+/** Cells of the footprint raster when copies touching flush are cut apart (metres). */
+constexpr float kFootprintCell = 0.004f;
+/** Share of a copy's rectangle its cut of the footprint must cover. */
+constexpr float kFootprintCoverage = 0.75f;
+
+/** How far outside every copy's rectangle a point of a group of flush copies may lie and still
+  * go to the nearest (metres): a copy's rectangle cuts the group only where another copy
+  * lies beyond it; elsewhere the object's own outline ends the copy.
+  */
+constexpr float kFootprintReach = 0.05f;
+
+/** The parts of `object` that copies of a box of `size` (a model's), touching each other
+  * flush with their tops at one height, occupy (splitFootprint()): its pixels and keypoints
+  * nearest each copy's rectangle on the plane (within kFootprintReach), with the box fitted to
+  * them, so that a copy is measured on its own outline, not on the rectangle. None if the
+  * object's height is none of the box's edges or its footprint is not such a group.
+  */
+FreeObjects
+flushCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
+             const Eigen::Vector4f& plane,
+             const KeypointCloud& keypoints,
+             const FreeObject& object,
+             const Eigen::Vector3f& size,
+             const SizeAgreement& agree)
+{
+  FreeObjects parts;
+  const Eigen::Vector3f normal = plane.head<3>();
+  int up = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs (object.extent.pose.col (i).head<3>().dot (normal)) >
+        std::abs (object.extent.pose.col (up).head<3>().dot (normal)))
+      up = i;
+  int height = -1;
+  for (int i = 0; i < 3; ++i)
+    if (agree.edgesAgree (object.extent.size[up], size[i]))
+      height = i;
+  if (height < 0)
+    return parts;
+  const Eigen::Vector2f rectangle (size[(height + 1) % 3], size[(height + 2) % 3]);
+
+  const Eigen::Vector3f e1 = normal.unitOrthogonal();
+  const Eigen::Vector3f e2 = normal.cross (e1);
+  const auto onPlane = [&e1, &e2] (const Eigen::Vector3f& p) {
+    return Eigen::Vector2f (e1.dot (p), e2.dot (p));
+  };
+  std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>> footprint;
+  footprint.reserve (object.pixels.size());
+  for (const auto pixel : object.pixels)
+    footprint.push_back (onPlane (organized[pixel].getVector3fMap()));
+  FootprintRectangles copies;
+  if (!splitFootprint (
+          footprint, rectangle, kFootprintCell, kFootprintCoverage, copies))
+    return parts;
+  const auto nearest = [&copies] (const Eigen::Vector2f& point) {
+    int best = -1;
+    float best_distance = kFootprintReach;
+    for (std::size_t c = 0; c < copies.size(); ++c)
+      if (const float d = copies[c].distance (point); d <= best_distance) {
+        best = static_cast<int> (c);
+        best_distance = d;
+      }
+    return best;
+  };
+  FreeObjects cut (copies.size());
+  for (std::size_t i = 0; i < footprint.size(); ++i)
+    if (const int c = nearest (footprint[i]); c >= 0)
+      cut[static_cast<std::size_t> (c)].pixels.push_back (object.pixels[i]);
+  for (const auto k : object.keypoints)
+    if (const int c = nearest (
+            onPlane (keypoints[static_cast<std::size_t> (k)].getVector3fMap()));
+        c >= 0)
+      cut[static_cast<std::size_t> (c)].keypoints.push_back (k);
+  for (auto& part : cut)
+    if (fitInstanceBox (organized, plane, part.pixels, part.extent))
+      parts.push_back (part);
+  return parts;
+}
+
 /** Group the objects whose sizes agree with the first of the group (most keypoints first);
   * groups of one are dropped.
   */
@@ -446,13 +525,26 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     ++found;
     return m;
   };
+  // An object of no model's size may be copies of one touching each other flush.
+  const auto joinModelOrCutIntoCopies = [&] (const FreeObject& object) {
+    int m = joinModelOfItsSize (object);
+    for (std::size_t other = 0; m < 0 && other < sizes.size(); ++other) {
+      if (!sizes[other].valid || !untaken (object))
+        continue;
+      for (const FreeObject& part : flushCopies (
+               organized, plane, *keypoints_, object, sizes[other].size, agree))
+        if (part.keypoints.size() >= static_cast<std::size_t> (min_keypoints_))
+          m = std::max (m, joinModelOfItsSize (part));
+    }
+    return m;
+  };
   for (const FreeObject& object : beside_found)
-    joinModelOfItsSize (object);
+    joinModelOrCutIntoCopies (object);
   // An object standing alone, of no model's size, may found a model with others of its size.
   std::vector<std::size_t> alone;
   for (std::size_t o = 0; o < free_objects.size(); ++o) {
     const FreeObject& object = free_objects[o];
-    if (joinModelOfItsSize (object) < 0 && discover_models_ && untaken (object) &&
+    if (joinModelOrCutIntoCopies (object) < 0 && discover_models_ && untaken (object) &&
         object.extent.size.minCoeff() >= min_model_edge_ &&
         surroundedShare (organized, plane, object.extent, 2.0f * plane_tolerance_) <=
             max_surrounded_share_)

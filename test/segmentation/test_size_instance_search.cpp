@@ -111,12 +111,35 @@ TEST (SizeInstanceSearch, LeavesBoxesOfAnotherSizeAlone)
   expectNothingFound (searchIn (scene), scene.modelOf ({0, 1}));
 }
 
-TEST (SizeInstanceSearch, LeavesTouchingCopiesMeasuredAsOneAlone)
+TEST (SizeInstanceSearch, CutsCopiesTouchingEachOtherFlushApart)
 {
-  // Boxes 2 and 3 have the model's size but touch along their long edges: their tops join
-  // into one surface of twice the width.
+  // Boxes 2 and 3 have the model's size and touch along their long edges, neither found: their
+  // tops join into one surface of twice the width, which the copies' rectangles cut apart.
   const Boxes scene (twoApartTwoTouching());
-  expectNothingFound (searchIn (scene), scene.modelOf ({0, 1}));
+  mid::ObjectModels models = {scene.modelOf ({0, 1})};
+  std::size_t found = 0;
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  EXPECT_EQ (found, 2u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  std::set<int> boxes;
+  for (std::size_t i = 2; i < 4; ++i) {
+    const mid::ModelInstance& copy = models[0].instances[i];
+    const int box = scene.boxOf (copy.keypoints);
+    boxes.insert (box);
+    ASSERT_GE (box, 2);
+    const Eigen::Isometry3d& truth =
+        scene.scene.boxes[static_cast<std::size_t> (box)].pose;
+    EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
+    EXPECT_LT (
+        (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+        0.006f);
+  }
+  EXPECT_EQ (boxes, (std::set<int>{2, 3}));
+
+  // Two touching boxes that rectangles of the model's size (square, 0.1 m) do not tile are
+  // left alone.
+  const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
+  expectNothingFound (searchIn (other), other.modelOf ({0, 1}));
 }
 
 TEST (SizeInstanceSearch, MeasuresACopyTouchingAFoundOneOutsideTheFoundOnesBox)

@@ -41,11 +41,11 @@ public:
   bool
   differOnEveryEdge (const Eigen::Vector3f& a, const Eigen::Vector3f& b) const;
 
-private:
   /** \brief True if the edges x and y (metres) agree. */
   bool
   edgesAgree (float x, float y) const;
 
+private:
   float absolute_, relative_;
 };
 
