@@ -34,6 +34,10 @@ namespace {
 
 /** A footprint of fewer rectangles' area than this is one copy, not a group. */
 constexpr double kMinCopies = 1.6;
+/** A footprint of more copies' area than this is left whole (a wall of boxes, not a group). */
+constexpr std::size_t kMaxCopies = 32;
+/** Cells the rectangle's shortest edge must span at least. */
+constexpr float kCellsPerEdge = 10.0f;
 /** Share of the footprint the rectangles placed must cover. */
 constexpr double kMinExplained = 0.8;
 /** Largest raster, in cells. */
@@ -111,7 +115,9 @@ cornerPlacements (const Raster& raster,
   cv::findContours (
       occupied.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
   FootprintRectangles placements;
-  const double cos_tolerance = std::sin (kCornerTolerance * M_PI / 180.0);
+  // Two edges meet at a right angle within the tolerance when the cosine of their angle is
+  // at most the sine of the tolerance.
+  const double max_cosine = std::sin (kCornerTolerance * M_PI / 180.0);
   for (const auto& contour : contours) {
     std::vector<cv::Point> hull, outline;
     cv::convexHull (contour, hull);
@@ -128,8 +134,7 @@ cornerPlacements (const Raster& raster,
       const Eigen::Vector2f to_previous (static_cast<float> (previous.x - corner.x),
                                          static_cast<float> (previous.y - corner.y));
       if (to_next.norm() == 0.0f || to_previous.norm() == 0.0f ||
-          std::abs (to_next.normalized().dot (to_previous.normalized())) >
-              cos_tolerance)
+          std::abs (to_next.normalized().dot (to_previous.normalized())) > max_cosine)
         continue;
       const Eigen::Vector2f at = raster.centreOf (corner.x, corner.y);
       for (const auto& [along, other] :
@@ -221,6 +226,20 @@ splitFootprint (const std::vector<Eigen::Vector2f,
         "> 0, the coverage in (0, 1].\n");
     return false;
   }
+  if (kCellsPerEdge * cell > size.minCoeff()) {
+    PCL_ERROR (
+        "[mid::splitFootprint] The cell (%g m) must be a tenth of the rectangle's "
+        "shortest edge (%g m) or less.\n",
+        static_cast<double> (cell),
+        static_cast<double> (size.minCoeff()));
+    return false;
+  }
+  if (std::any_of (points.begin(), points.end(), [] (const Eigen::Vector2f& point) {
+        return !point.allFinite();
+      })) {
+    PCL_ERROR ("[mid::splitFootprint] A point of the footprint is not finite.\n");
+    return false;
+  }
   if (points.empty())
     return true;
   Eigen::Vector2f low = points.front(), high = points.front();
@@ -257,7 +276,7 @@ splitFootprint (const std::vector<Eigen::Vector2f,
   const double copy_cells = (static_cast<double> (size.x() / cell) + 1.0) *
                             (static_cast<double> (size.y() / cell) + 1.0);
   const auto copies = static_cast<std::size_t> (std::lround (total / copy_cells));
-  if (total < kMinCopies * copy_cells)
+  if (total < kMinCopies * copy_cells || copies > kMaxCopies)
     return true;
 
   // The first rectangle may fit a corner either way round; each way is followed through, and

@@ -324,7 +324,9 @@ freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   return true;
 }
 
-/** Cells of the footprint raster when copies touching flush are cut apart (metres). */
+/** Cells of the footprint raster when copies touching flush are cut apart (metres; a tenth of
+  * the rectangle's shortest edge if that is less).
+  */
 constexpr float kFootprintCell = 0.004f;
 /** Share of a copy's rectangle its cut of the footprint must cover. */
 constexpr float kFootprintCoverage = 0.75f;
@@ -356,9 +358,12 @@ flushCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
     if (std::abs (object.extent.pose.col (i).head<3>().dot (normal)) >
         std::abs (object.extent.pose.col (up).head<3>().dot (normal)))
       up = i;
+  // The box's edge closest to the object's height stands up.
   int height = -1;
   for (int i = 0; i < 3; ++i)
-    if (agree.edgesAgree (object.extent.size[up], size[i]))
+    if (agree.edgesAgree (object.extent.size[up], size[i]) &&
+        (height < 0 || std::abs (size[i] - object.extent.size[up]) <
+                           std::abs (size[height] - object.extent.size[up])))
       height = i;
   if (height < 0)
     return parts;
@@ -374,8 +379,8 @@ flushCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
   for (const auto pixel : object.pixels)
     footprint.push_back (onPlane (organized[pixel].getVector3fMap()));
   FootprintRectangles copies;
-  if (!splitFootprint (
-          footprint, rectangle, kFootprintCell, kFootprintCoverage, copies))
+  const float cell = std::min (kFootprintCell, 0.1f * rectangle.minCoeff());
+  if (!splitFootprint (footprint, rectangle, cell, kFootprintCoverage, copies))
     return parts;
   const auto nearest = [&copies] (const Eigen::Vector2f& point) {
     int best = -1;
@@ -510,6 +515,8 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
           return taken[static_cast<std::size_t> (k)];
         });
   };
+  // The model of the object's size, -1 if none; it joins that model unless one of its
+  // keypoints went to another copy already.
   const auto joinModelOfItsSize = [&] (const FreeObject& object) {
     const int m = modelOfSize (object.extent.size, sizes, agree);
     if (m < 0 || !untaken (object))

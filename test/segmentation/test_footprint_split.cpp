@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace {
 
@@ -135,19 +136,33 @@ TEST (FootprintSplit, LeavesOneCopyAndOtherShapesWhole)
   EXPECT_TRUE (found.empty());
 }
 
-TEST (FootprintSplit, RefusesBadParameters)
+TEST (FootprintSplit, RefusesBadParametersAndPoints)
 {
   const Points points =
       sampled ({rectangle (0.0f, 0.0f, 0.0f), rectangle (0.06f, 0.0f, 0.0f)});
-  mid::FootprintRectangles found (1);
-  EXPECT_FALSE (mid::splitFootprint (points, {0.0f, 0.16f}, kCell, kCoverage, found));
-  EXPECT_TRUE (found.empty());
-  found.resize (1);
-  EXPECT_FALSE (mid::splitFootprint (points, kCopy, -kCell, kCoverage, found));
-  EXPECT_TRUE (found.empty());
-  EXPECT_FALSE (mid::splitFootprint (points, kCopy, kCell, 1.5f, found));
-  EXPECT_FALSE (mid::splitFootprint (points, kCopy, 1e-7f, kCoverage, found));
-  EXPECT_FALSE (mid::splitFootprint (
-      points, kCopy, std::numeric_limits<float>::quiet_NaN(), kCoverage, found));
-  EXPECT_TRUE (found.empty());
+  const auto refuses = [] (const Points& footprint,
+                           const Eigen::Vector2f& size,
+                           float cell,
+                           float coverage) {
+    mid::FootprintRectangles found (1);
+    EXPECT_FALSE (mid::splitFootprint (footprint, size, cell, coverage, found));
+    EXPECT_TRUE (found.empty());
+  };
+  refuses (points, {0.0f, 0.16f}, kCell, kCoverage);
+  refuses (points, kCopy, -kCell, kCoverage);
+  refuses (points, kCopy, kCell, 1.5f);
+  refuses (points, kCopy, std::numeric_limits<float>::quiet_NaN(), kCoverage);
+  refuses (points, kCopy, 0.01f, kCoverage); // coarser than a tenth of 0.06 m
+  refuses (points, kCopy, 1e-5f, kCoverage); // more than 4 million cells
+  Points with_nan = points;
+  with_nan.front().x() = std::numeric_limits<float>::quiet_NaN();
+  refuses (with_nan, kCopy, kCell, kCoverage);
+  Points with_infinity = points;
+  with_infinity.back().y() = std::numeric_limits<float>::infinity();
+  refuses (with_infinity, kCopy, kCell, kCoverage);
+
+  // The same points with good parameters are cut (a positive control).
+  mid::FootprintRectangles found;
+  EXPECT_TRUE (mid::splitFootprint (points, kCopy, kCell, kCoverage, found));
+  EXPECT_EQ (found.size(), 2u);
 }

@@ -136,8 +136,8 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingEachOtherFlushApart)
   }
   EXPECT_EQ (boxes, (std::set<int>{2, 3}));
 
-  // Two touching boxes that rectangles of the model's size (square, 0.1 m) do not tile are
-  // left alone.
+  // Two touching boxes of another size: the model's square rectangles (0.1 m) cover most of
+  // their tops, but each part, measured on its own outline, is a box of 0.12 x 0.09 m.
   const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
   expectNothingFound (searchIn (other), other.modelOf ({0, 1}));
 }

@@ -54,9 +54,11 @@ using FootprintRectangles =
   * \param[in] min_coverage share of a placed rectangle's cells that the footprint must cover
   * (in (0, 1])
   * \param[out] rectangles the copies' rectangles, at least two; empty when the footprint is
-  * not a group of at least two copies (less than 1.6 copies' area, or no placement as above)
-  * \return false (with a PCL_ERROR, rectangles empty) on a size, cell or coverage out of range,
-  * or a footprint of more than 4 million cells; true otherwise, also when nothing is cut
+  * not a group of 2 to 32 copies (less than 1.6 copies' area or more than 32, or no placement
+  * as above)
+  * \return false (with a PCL_ERROR, rectangles empty) on a size, cell or coverage out of range
+  * (the cell more than a tenth of the shortest edge), a point that is not finite, or a
+  * footprint of more than 4 million cells; true otherwise, also when nothing is cut
   */
 bool
 splitFootprint (const std::vector<Eigen::Vector2f,

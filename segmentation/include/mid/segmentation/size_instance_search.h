@@ -33,24 +33,30 @@ namespace mid {
   *    pose is the one that brings the model's box onto the object's, right up to the box's
   *    symmetries (a half turn of a box, a quarter turn of a square one; which face the copy
   *    shows is what is not known); its free keypoints become landmarks of the model, with
-  *    their descriptors;
+  *    their descriptors. An object of no model's size whose height is an edge of a model's
+  *    box may be copies of it touching each other flush: splitFootprint() cuts its footprint
+  *    into the box's rectangles, and each part, measured on its own outline (the points
+  *    nearest its rectangle), joins the model when it has its size;
   * 4. with setDiscoverModels(), groups the objects (as they lie) of no model's size, sharing
   *    no keypoint with an instance, that stand alone on the plane (at most
   *    `max_surrounded_share` of the pixels around their surface hold something else than
   *    the plane and the object's own box: not in a pile, a bin or a row of touching
-  *    objects) and whose shortest edge
-  *    is at least `min_model_edge`, by size: two or more of one size become a new model, in
-  *    the box frame of the copy with the most keypoints, each copy an instance posed by its
-  *    box (up to the box's symmetries), all their keypoints landmarks.
+  *    objects) and whose shortest edge is at least `min_model_edge`, by size: two or more of
+  *    one size become a new model, in the box frame of the copy with the most keypoints,
+  *    each copy an instance posed by its box (up to the box's symmetries), all their
+  *    keypoints landmarks.
   *
-  * An object touching another (other than a found copy of a measured model) is measured with
-  * it and agrees with no model's size; an object occluded in part is measured too small:
-  * both are left alone. A product of another type that has the same size within the
-  * tolerance is taken for a copy: the step trades those for the copies that show an
-  * unmatched face, far more common on a table of several copies of one product. The models of step 4 rest on the size alone: two different products of one
-  * size standing apart become one model, which is why it is asked for separately, and why it
-  * keeps to objects that stand alone (in a pile or a bin the surfaces are fragments, and small
-  * fragments agree in size by chance) and to edges that the tolerance measures well.
+  * An object touching another is measured with it and agrees with no model's size, unless
+  * the other is a found copy of a measured model or both are copies of one touching flush;
+  * an object occluded in part is measured too small: both are left alone. A product of
+  * another type that has the same size within the tolerance is taken for a copy, and so are
+  * touching boxes of another size whose footprint the model's rectangles tile and whose
+  * parts have its size: the step trades those for the copies that show an unmatched face,
+  * far more common on a table of several copies of one product. The models of step 4 rest on
+  * the size alone: two different products of one size standing apart become one model,
+  * which is why it is asked for separately, and why it keeps to objects that stand alone (in
+  * a pile or a bin the surfaces are fragments, and small fragments agree in size by chance)
+  * and to edges that the tolerance measures well.
   * Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
 class SizeInstanceSearch : public ModelSizeMeasurement
