@@ -408,7 +408,7 @@ flushCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
 }
 
 /** Group the objects whose sizes agree with the first of the group (most keypoints first);
-  * groups of one are dropped.
+  * an object no other agrees with is a group of its own.
   */
 std::vector<std::vector<std::size_t>>
 groupsOfOneSize (const FreeObjects& objects,
@@ -430,12 +430,17 @@ groupsOfOneSize (const FreeObjects& objects,
       if (!grouped[order[j]] &&
           agree (objects[order[i]].extent.size, objects[order[j]].extent.size))
         group.push_back (order[j]);
-    if (group.size() < 2)
-      continue;
     for (const std::size_t g : group)
       grouped[g] = true;
     groups.push_back (group);
   }
+  // Larger groups first: their size is the better evidence.
+  std::stable_sort (
+      groups.begin(),
+      groups.end(),
+      [] (const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
+        return a.size() > b.size();
+      });
   return groups;
 }
 
@@ -547,28 +552,62 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   };
   for (const FreeObject& object : beside_found)
     joinModelOrCutIntoCopies (object);
-  // An object standing alone, of no model's size, may found a model with others of its size.
-  std::vector<std::size_t> alone;
+  // An object standing alone, of no model's size, may found a model with others of its size;
+  // the objects of no model's size that do not stand alone may be copies of it touching each
+  // other flush.
+  std::vector<std::size_t> alone, joined;
   for (std::size_t o = 0; o < free_objects.size(); ++o) {
     const FreeObject& object = free_objects[o];
-    if (joinModelOrCutIntoCopies (object) < 0 && discover_models_ && untaken (object) &&
-        object.extent.size.minCoeff() >= min_model_edge_ &&
+    if (joinModelOrCutIntoCopies (object) >= 0 || !discover_models_ ||
+        !untaken (object))
+      continue;
+    if (object.extent.size.minCoeff() >= min_model_edge_ &&
         surroundedShare (organized, plane, object.extent, 2.0f * plane_tolerance_) <=
             max_surrounded_share_)
       alone.push_back (o);
+    else
+      joined.push_back (o);
   }
   // The model frame is the first copy's box frame (centred on the landmarks after).
+  std::vector<std::size_t> candidates = alone;
+  candidates.insert (candidates.end(), joined.begin(), joined.end());
+  std::vector<bool> used (free_objects.size(), false);
   for (const auto& group : groupsOfOneSize (free_objects, alone, agree)) {
-    ObjectModel model;
+    FreeObjects copies;
+    std::vector<std::size_t> sources;
     for (const std::size_t o : group)
-      addInstanceOfKeypoints (*keypoints_,
-                              *descriptors_,
-                              free_objects[o].keypoints,
-                              free_objects[o].extent.pose,
-                              model);
+      if (!used[o]) {
+        copies.push_back (free_objects[o]);
+        sources.push_back (o);
+      }
+    if (copies.size() < 2)
+      continue;
+    const Eigen::Vector3f size = copies.front().extent.size;
+    for (const std::size_t o : candidates) {
+      if (used[o] || std::find (group.begin(), group.end(), o) != group.end())
+        continue;
+      FreeObjects parts;
+      for (const FreeObject& part :
+           flushCopies (organized, plane, *keypoints_, free_objects[o], size, agree))
+        if (part.keypoints.size() >= static_cast<std::size_t> (min_keypoints_) &&
+            agree (part.extent.size, size))
+          parts.push_back (part);
+      if (parts.size() < 2)
+        continue;
+      sources.push_back (o);
+      copies.insert (copies.end(), parts.begin(), parts.end());
+    }
+    if (copies.size() < 2)
+      continue;
+    for (const std::size_t o : sources)
+      used[o] = true;
+    ObjectModel model;
+    for (const FreeObject& copy : copies)
+      addInstanceOfKeypoints (
+          *keypoints_, *descriptors_, copy.keypoints, copy.extent.pose, model);
     centerModelFrame (model);
     models.push_back (model);
-    found += group.size();
+    found += copies.size();
   }
   return true;
 }

@@ -278,6 +278,52 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
   EXPECT_TRUE (discoverBySize (search, found).empty());
 }
 
+TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
+{
+  // Boxes 0 and 1 stand alone and agree on their size; boxes 2 and 3, of that size, touch
+  // flush, and their joined top is cut into copies of it. No model to start from.
+  const Boxes scene (twoApartTwoTouching());
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  std::size_t found = 0;
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, 4u);
+  const mid::ObjectModel& model = models[0];
+  ASSERT_EQ (model.instances.size(), 4u);
+  std::set<int> boxes;
+  const int first = scene.boxOf (model.instances[0].keypoints);
+  ASSERT_GE (first, 0);
+  const Eigen::Isometry3d& a = scene.scene.boxes[static_cast<std::size_t> (first)].pose;
+  for (const auto& instance : model.instances) {
+    const int box = scene.boxOf (instance.keypoints);
+    ASSERT_GE (box, 0);
+    boxes.insert (box);
+    // Each instance's pose relative to the first is the boxes' own, up to the box's
+    // symmetries.
+    const Eigen::Isometry3d& b = scene.scene.boxes[static_cast<std::size_t> (box)].pose;
+    const Eigen::Matrix4f relative = instance.pose * model.instances[0].pose.inverse();
+    EXPECT_LT (rotationErrorModuloBox (relative * a.matrix().cast<float>(), b), 3.0);
+    const Eigen::Vector3f moved =
+        relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
+        relative.topRightCorner<3, 1>();
+    EXPECT_LT ((moved - b.translation().cast<float>()).norm(), 0.006f);
+  }
+  EXPECT_EQ (boxes, (std::set<int>{0, 1, 2, 3}));
+
+  // The boxes standing alone of another size: the touching ones are not cut into them.
+  const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
+  mid::SizeInstanceSearch other_search = searchIn (other);
+  other_search.setDiscoverModels (true);
+  const mid::ObjectModels alone = discoverBySize (other_search, found);
+  ASSERT_EQ (alone.size(), 1u);
+  EXPECT_EQ (found, 2u);
+  std::set<int> alone_boxes;
+  for (const auto& instance : alone[0].instances)
+    alone_boxes.insert (other.boxOf (instance.keypoints));
+  EXPECT_EQ (alone_boxes, (std::set<int>{0, 1}));
+}
+
 TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAlone)
 {
   // The two copies of one size lie on a low tray, which surrounds them: their surfaces could

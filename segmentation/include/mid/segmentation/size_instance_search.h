@@ -44,7 +44,11 @@ namespace mid {
   *    objects) and whose shortest edge is at least `min_model_edge`, by size: two or more of
   *    one size become a new model, in the box frame of the copy with the most keypoints,
   *    each copy an instance posed by its box (up to the box's symmetries), all their
-  *    keypoints landmarks.
+  *    keypoints landmarks. Such a group also cuts, as in step 3, the other objects of no
+  *    model's size (standing alone or not) that are two or more of its copies touching each
+  *    other flush, largest groups first. The size of an object seen once cuts nothing: a
+  *    box of another size that two of its footprints tile (a cookie box, two juice cartons
+  *    lying flush) is too common.
   *
   * An object touching another is measured with it and agrees with no model's size, unless
   * the other is a found copy of a measured model or both are copies of one touching flush;
