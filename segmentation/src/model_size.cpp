@@ -127,7 +127,18 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                              plane_tolerance,
                              extents))
     return false;
-  sizes.resize (models.size());
+  modelSizesOfBoxes (models, extents, agree, min_agreeing, sizes);
+  return true;
+}
+
+void
+modelSizesOfBoxes (const ObjectModels& models,
+                   const std::vector<InstanceExtents>& extents,
+                   const SizeAgreement& agree,
+                   int min_agreeing,
+                   ModelSizes& sizes)
+{
+  sizes.assign (models.size(), ModelSize());
   for (std::size_t m = 0; m < models.size(); ++m) {
     std::size_t representative = 0;
     const std::vector<std::size_t> group = largestSizeGroup (
@@ -139,7 +150,6 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                             extents[m][representative].pose;
     sizes[m].valid = static_cast<int> (group.size()) >= min_agreeing;
   }
-  return true;
 }
 
 std::string

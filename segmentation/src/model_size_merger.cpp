@@ -10,6 +10,59 @@
 
 namespace mid {
 
+namespace {
+
+/** Box frame -> model frame of a box of `size` in `model`: the model's own box when its size
+  * (`own`) agrees, else the box of the first of its measured instances (`extents`) that has
+  * `size`; false if neither.
+  */
+bool
+boxOfSize (const Eigen::Vector3f& size,
+           const ModelSize& own,
+           const ObjectModel& model,
+           const InstanceExtents& extents,
+           const SizeAgreement& agree,
+           Eigen::Matrix4f& box_in_model)
+{
+  if (own.valid && agree (size, own.size)) {
+    box_in_model = own.box_in_model;
+    return true;
+  }
+  for (const std::size_t i : measuredInstances (extents))
+    if (agree (size, extents[i].size)) {
+      box_in_model = model.instances[i].pose.inverse() * extents[i].pose;
+      return true;
+    }
+  return false;
+}
+
+/** The boxes of one size in models a and b (box frame -> model frame): a's size and a box of
+  * it in b, or else b's size and a box of it in a; false if neither model holds the other's.
+  */
+bool
+boxesOfOneSize (const ObjectModel& a,
+                const ObjectModel& b,
+                const ModelSize& size_a,
+                const ModelSize& size_b,
+                const InstanceExtents& extents_a,
+                const InstanceExtents& extents_b,
+                const SizeAgreement& agree,
+                Eigen::Matrix4f& box_in_a,
+                Eigen::Matrix4f& box_in_b)
+{
+  if (size_a.valid && boxOfSize (size_a.size, size_b, b, extents_b, agree, box_in_b)) {
+    box_in_a = size_a.box_in_model;
+    return true;
+  }
+  if (size_b.valid && boxOfSize (size_b.size, size_a, a, extents_a, agree, box_in_a)) {
+    box_in_b = size_b.box_in_model;
+    return true;
+  }
+  return false;
+}
+
+} // namespace
+
 bool
 ModelSizeMerger::merge (ObjectModels& models) const
 {
@@ -24,31 +77,50 @@ ModelSizeMerger::merge (ObjectModels& models) const
   if (!fitPlane (plane))
     return true;
   const SizeAgreement agree = agreement();
-  ModelSizes sizes;
-  if (!measureSizes (models, plane, sizes))
+  std::vector<InstanceExtents> extents;
+  if (!measureBoxes (models, plane, extents))
     return false;
+  ModelSizes sizes;
+  modelSizesOfBoxes (models, extents, agree, min_agreeing_, sizes);
 
   for (std::size_t a = 0; a < models.size(); ++a) {
-    for (std::size_t b = a + 1; b < models.size() && sizes[a].valid;) {
-      if (!sizes[b].valid || !agree (sizes[a].size, sizes[b].size)) {
+    for (std::size_t b = a + 1; b < models.size();) {
+      Eigen::Matrix4f box_in_a, box_in_b;
+      if (!boxesOfOneSize (models[a],
+                           models[b],
+                           sizes[a],
+                           sizes[b],
+                           extents[a],
+                           extents[b],
+                           agree,
+                           box_in_a,
+                           box_in_b)) {
         ++b;
         continue;
       }
       if (models[b].instances.size() > models[a].instances.size()) {
         std::swap (models[a], models[b]);
         std::swap (sizes[a], sizes[b]);
+        std::swap (box_in_a, box_in_b);
+      }
+      if (!sizes[a].valid) { // the size the two agree on, in a's frame
+        sizes[a].valid = true;
+        sizes[a].size = sizes[b].size;
+        sizes[a].box_in_model = box_in_a;
       }
       // One box frame in both models: x_b = box_in_b * box_in_a^-1 * x_a.
-      const Eigen::Matrix4f into_to_from =
-          sizes[b].box_in_model * sizes[a].box_in_model.inverse();
       mergeModel (models[a],
                   models[b],
-                  into_to_from,
+                  box_in_b * box_in_a.inverse(),
                   {},
                   duplicate_angle_,
                   duplicate_distance_);
       models.erase (models.begin() + static_cast<std::ptrdiff_t> (b));
       sizes.erase (sizes.begin() + static_cast<std::ptrdiff_t> (b));
+      // The merged model's boxes are no longer its instances' (mergeModel() renumbers them):
+      // it merges on by its size alone.
+      extents[a].clear();
+      extents.erase (extents.begin() + static_cast<std::ptrdiff_t> (b));
     }
   }
   return true;

@@ -267,6 +267,43 @@ TEST (ModelSizeMerger, MergesCopiesShowingAnotherFaceUp)
   }
 }
 
+TEST (ModelSizeMerger, MergesAModelOneOfWhoseCopiesHasTheOthersSize)
+{
+  // Boxes 0 to 2 have one size; box 3 is smaller. The second model (boxes 2 and 3) has no size
+  // most of its copies agree on, and takes the smaller surface's (box 3's): it agrees with the
+  // first model's size only through box 2.
+  const Boxes scene ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
+                      restingBox (kApplePrint, 0.16, -0.12, -35.0),
+                      restingBox (kSoyPrint, -0.1, 0.13, 20.0),
+                      restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.07, 0.04})});
+  const Eigen::Isometry3f other_frame =
+      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
+      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
+  mid::ObjectModels models = {scene.modelOf ({0, 1}),
+                              scene.modelOf ({2, 3}, other_frame)};
+  ASSERT_TRUE (mergerFor (scene).merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
+  int posed = 0;
+  for (const auto& instance : models[0].instances) {
+    const int b = scene.boxOf (instance.keypoints);
+    ASSERT_GE (b, 0);
+    if (b == 3)
+      continue;
+    ++posed;
+    const Eigen::Isometry3d& truth =
+        scene.scene.boxes[static_cast<std::size_t> (b)].pose;
+    EXPECT_LT (rotationErrorModuloBox (instance.pose, truth), 3.0) << "box " << b;
+    EXPECT_LT (
+        (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
+            .norm(),
+        0.004f)
+        << "box " << b;
+  }
+  EXPECT_EQ (posed, 3);
+}
+
 TEST (InstanceExtent, RefusesPixelsOutsideTheFrameOrWithoutAPoint)
 {
   const Boxes scene (fourBoxes());

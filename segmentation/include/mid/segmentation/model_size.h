@@ -154,6 +154,22 @@ measureModelSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                    int min_agreeing,
                    ModelSizes& sizes);
 
+/** \brief Each model's size from its instances' boxes (measureInstanceBoxes()): the size
+  * that most of its measured instances agree on (largestSizeGroup()), valid when at least
+  * `min_agreeing` do.
+  * \param[in] models the models
+  * \param[in] extents one list per model, one box per instance, in order
+  * \param[in] agree when two sizes are one
+  * \param[in] min_agreeing measured instances that must agree on a size (ModelSize::valid)
+  * \param[out] sizes one per model, in order
+  */
+void
+modelSizesOfBoxes (const ObjectModels& models,
+                   const std::vector<InstanceExtents>& extents,
+                   const SizeAgreement& agree,
+                   int min_agreeing,
+                   ModelSizes& sizes);
+
 /** \brief What the steps that measure the boxes of models on the support plane and compare
   * their sizes share (ModelSizeMerger, ModelSizeSplitter, ModelBoxExtender,
   * SizeInstanceSearch): the SupportPlaneMeasurement, and when two sizes agree.

@@ -26,6 +26,10 @@ namespace mid {
   *    model into the larger: the boxes' frames (axes along the edges in ascending length)
   *    give the transform between the model frames, so the merged poses are those of the box,
   *    right up to the box's symmetries (a half turn of a box, a quarter turn of a square one).
+  *    A model whose size disagrees is still merged when one of its measured copies has the
+  *    other model's size (the box of that copy then gives the transform): with two copies,
+  *    one joined with a neighbour or partly hidden, a model takes the size of the smaller
+  *    surface, which is often the hidden one's.
   *
   * Two products of one size (within the tolerance) are merged too: the step trades those for
   * the second models of one product, which are far more common on a table of several copies
