@@ -283,6 +283,10 @@ printHelp (const char* program)
       "repeats\n");
   print_info ("                      on it (the paper's behaviour)\n");
   print_info (
+      "  -keep_interpenetrating  keep the instances of a model whose boxes would "
+      "interpenetrate\n");
+  print_info ("                      (the paper's behaviour)\n");
+  print_info (
       "  -keep_unexplained   keep the observations an instance's pose does not explain "
       "(the\n");
   print_info ("                      paper's behaviour)\n");
@@ -353,6 +357,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-repeat_along", 1},
                                       {"-repeat_inside", 1},
                                       {"-keep_unexplained", 0},
+                                      {"-keep_interpenetrating", 0},
                                       {"-obs_residual", 1},
                                       {"-obs_margin", 1},
                                       {"-no_size_search", 0},
@@ -455,6 +460,8 @@ parseOptions (int argc, char** argv, Options& options)
   p.remove_repeated_prints =
       !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");
   p.prune_observations = !pcl::console::find_switch (argc, argv, "-keep_unexplained");
+  p.remove_interpenetrating =
+      !pcl::console::find_switch (argc, argv, "-keep_interpenetrating");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =

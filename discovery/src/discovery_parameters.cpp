@@ -283,6 +283,11 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "size_discovery_min_edge",
              static_cast<double> (p.size_discovery_min_edge),
              "finite and >= 0");
+  c.require (p.interpenetration_max_centre_distance >= 0.0f &&
+                 p.interpenetration_max_centre_distance <= 1.0f,
+             "interpenetration_max_centre_distance",
+             static_cast<double> (p.interpenetration_max_centre_distance),
+             "in [0, 1]");
   c.require (p.observation_max_residual > 0.0f &&
                  std::isfinite (p.observation_max_residual),
              "observation_max_residual",

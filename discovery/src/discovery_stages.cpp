@@ -15,6 +15,7 @@
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/guided_instance_search.h>
 #include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/interpenetration_filter.h>
 #include <mid/segmentation/keypoint_patch.h>
 #include <mid/segmentation/model_box_extension.h>
 #include <mid/segmentation/model_size_merger.h>
@@ -976,6 +977,29 @@ searchBySize (const DiscoveryParameters& p,
   return true;
 }
 
+/** Remove the instances whose box would interpenetrate another instance's box of their model
+  * (DiscoveryParameters::remove_interpenetrating), when the organized frame is known; times
+  * the "interpenetration" stage either way.
+  */
+bool
+removeInterpenetrating (const DiscoveryParameters& p,
+                        const KeypointSurface& frame,
+                        FramePlane& plane,
+                        DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_interpenetrating && frame.organized) {
+    InterpenetrationFilter filter;
+    setUpBoxMeasurement (p, frame, result, plane, filter);
+    filter.setMaxCentreDistance (p.interpenetration_max_centre_distance);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("interpenetration", watch.getTime());
+  return true;
+}
+
 /** Drop the observations that the instances' poses do not explain
   * (DiscoveryParameters::prune_observations); times the "observations" stage either way.
   */
@@ -1113,7 +1137,9 @@ discoverFromKeypoints (const DiscoveryParameters& p,
       searchFromBoxes (p, frame, plane, result) && refineOnSurface (p, frame, result) &&
       splitBySize (p, frame, plane, result) && mergeBySize (p, frame, plane, result) &&
       removeRepeatedPrints (p, frame, plane, result) &&
-      searchBySize (p, frame, plane, result) && pruneObservations (p, result)) {
+      searchBySize (p, frame, plane, result) &&
+      removeInterpenetrating (p, frame, plane, result) &&
+      pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)
       centerModelFrame (model);

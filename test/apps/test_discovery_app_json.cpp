@@ -85,6 +85,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "size_merge",
                             "repeated_prints",
                             "size_search",
+                            "interpenetration",
                             "observations",
                             "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)

@@ -384,6 +384,15 @@ struct DiscoveryParameters
   float size_discovery_max_surrounded = 0.25f;
   float size_discovery_min_edge = 0.03f;
   ///@}
+  /** \brief After the size search, remove the instances of a model whose box would
+    * interpenetrate another of its instances' box: box centres closer than
+    * interpenetration_max_centre_distance (in [0, 1]) times the box's shortest edge (not in the
+    * paper; InterpenetrationFilter). Needs the organized frame and a model size.
+    */
+  ///@{
+  bool remove_interpenetrating = true;
+  float interpenetration_max_centre_distance = 0.8f;
+  ///@}
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the
     * paper; pruneUnexplainedObservations()): a keypoint farther than
     * observation_max_residual (metres, > 0; the paper's inlier threshold) from where the pose
