@@ -227,4 +227,27 @@ modelOfKeypoints (const KeypointCloud& keypoints,
   return model;
 }
 
+std::size_t
+removeInstances (const std::vector<std::vector<bool>>& remove, ObjectModels& models)
+{
+  std::size_t removed = 0;
+  for (std::size_t m = 0; m < models.size() && m < remove.size(); ++m) {
+    auto& instances = models[m].instances;
+    ModelInstances kept;
+    for (std::size_t i = 0; i < instances.size(); ++i)
+      if (i >= remove[m].size() || !remove[m][i])
+        kept.push_back (instances[i]);
+    if (kept.size() < 2 && kept.size() < instances.size())
+      kept.clear();
+    removed += instances.size() - kept.size();
+    instances.swap (kept);
+  }
+  models.erase (std::remove_if (
+                    models.begin(),
+                    models.end(),
+                    [] (const ObjectModel& model) { return model.instances.empty(); }),
+                models.end());
+  return removed;
+}
+
 } // namespace mid

@@ -57,27 +57,12 @@ InterpenetrationFilter::filter (ObjectModels& models, std::size_t& removed) cons
   ModelSizes sizes;
   if (!measureSizes (models, plane, sizes))
     return false;
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    if (!sizes[m].valid)
-      continue;
-    auto& instances = models[m].instances;
-    const std::vector<bool> gone = interpenetrating (
-        models[m], sizes[m], max_centre_distance_ * sizes[m].size.minCoeff());
-    ModelInstances kept;
-    for (std::size_t i = 0; i < instances.size(); ++i)
-      if (!gone[i])
-        kept.push_back (instances[i]);
-    // One copy is no repeated object: its last instance goes too, and the model below.
-    if (kept.size() < 2 && kept.size() < instances.size())
-      kept.clear();
-    removed += instances.size() - kept.size();
-    instances.swap (kept);
-  }
-  models.erase (std::remove_if (
-                    models.begin(),
-                    models.end(),
-                    [] (const ObjectModel& model) { return model.instances.empty(); }),
-                models.end());
+  std::vector<std::vector<bool>> gone (models.size());
+  for (std::size_t m = 0; m < models.size(); ++m)
+    if (sizes[m].valid)
+      gone[m] = interpenetrating (
+          models[m], sizes[m], max_centre_distance_ * sizes[m].size.minCoeff());
+  removed = removeInstances (gone, models);
   return true;
 }
 

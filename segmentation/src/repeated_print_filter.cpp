@@ -88,7 +88,9 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
     return true;
   const auto& organized = *surface_.organized;
   const float any_distance = std::numeric_limits<float>::infinity();
-  for (auto& model : models) {
+  std::vector<std::vector<bool>> repeats;
+  repeats.reserve (models.size());
+  for (const auto& model : models) {
     const Eigen::Vector3f centroid = landmarkCentroid (model);
     const auto& instances = model.instances;
     std::vector<std::size_t> order (instances.size());
@@ -134,22 +136,10 @@ RepeatedPrintFilter::filter (ObjectModels& models, std::size_t& removed) const
                     shareInside (*keypoints_, second, box) >= min_inside_share_;
       }
     }
-    ModelInstances kept;
-    for (std::size_t i = 0; i < instances.size(); ++i)
-      if (!repeat[i])
-        kept.push_back (instances[i]);
-    // A model of repeats alone is no object: its last instance goes too, and the model
-    // below.
-    if (kept.size() < 2 && kept.size() < instances.size())
-      kept.clear();
-    removed += instances.size() - kept.size();
-    model.instances.swap (kept);
+    repeats.push_back (repeat);
   }
-  models.erase (std::remove_if (
-                    models.begin(),
-                    models.end(),
-                    [] (const ObjectModel& model) { return model.instances.empty(); }),
-                models.end());
+  // A model of repeats alone is no object: its last instance goes too, and the model.
+  removed = removeInstances (repeats, models);
   return true;
 }
 

@@ -189,4 +189,14 @@ modelOfKeypoints (const KeypointCloud& keypoints,
                   const SIFTDescriptorCloud& descriptors,
                   const pcl::Indices& observed);
 
+/** \brief Remove the flagged instances of each model, keeping the others in order; a model
+  * that this leaves with one instance (of several) loses it too, as one copy is no repeated
+  * object, and models left without instances are erased.
+  * \param[in] remove one list per model, one flag per instance
+  * \param[in,out] models the models
+  * \return the number of instances removed (with the last ones of the models erased)
+  */
+std::size_t
+removeInstances (const std::vector<std::vector<bool>>& remove, ObjectModels& models);
+
 } // namespace mid
