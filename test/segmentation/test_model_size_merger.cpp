@@ -35,6 +35,18 @@ mergerFor (const Boxes& scene)
   return mid::test::measuringStep<mid::ModelSizeMerger> (scene);
 }
 
+/** The instance's pose is box b's true pose, up to the box's symmetries (3 deg, 4 mm). */
+void
+expectBoxPose (const Boxes& scene, const mid::ModelInstance& instance, int b)
+{
+  const Eigen::Isometry3d& truth = scene.scene.boxes[static_cast<std::size_t> (b)].pose;
+  EXPECT_LT (rotationErrorModuloBox (instance.pose, truth), 3.0) << "box " << b;
+  EXPECT_LT (
+      (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+      0.004f)
+      << "box " << b;
+}
+
 TEST (InstanceExtent, MeasuresABoxRestingOnTheTable)
 {
   const Boxes scene (fourBoxes());
@@ -168,14 +180,7 @@ TEST (ModelSizeMerger, MergesTwoModelsOfOneBoxSizeIntoTheBoxFrame)
   for (const auto& instance : models[0].instances) {
     const int b = scene.boxOf (instance.keypoints);
     ASSERT_GE (b, 0);
-    const Eigen::Isometry3d& truth =
-        scene.scene.boxes[static_cast<std::size_t> (b)].pose;
-    EXPECT_LT (rotationErrorModuloBox (instance.pose, truth), 3.0) << "box " << b;
-    EXPECT_LT (
-        (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
-            .norm(),
-        0.004f)
-        << "box " << b;
+    expectBoxPose (scene, instance, b);
   }
 }
 
@@ -292,14 +297,7 @@ TEST (ModelSizeMerger, MergesAModelOneOfWhoseCopiesHasTheOthersSize)
     if (b == 3)
       continue;
     ++posed;
-    const Eigen::Isometry3d& truth =
-        scene.scene.boxes[static_cast<std::size_t> (b)].pose;
-    EXPECT_LT (rotationErrorModuloBox (instance.pose, truth), 3.0) << "box " << b;
-    EXPECT_LT (
-        (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
-            .norm(),
-        0.004f)
-        << "box " << b;
+    expectBoxPose (scene, instance, b);
   }
   EXPECT_EQ (posed, 3);
 }
