@@ -87,17 +87,26 @@ largestSizeGroup (const InstanceExtents& extents,
                   const SizeAgreement& agree,
                   std::size_t& representative)
 {
+  const SizeAgreement loosely = agree.scaled (2.0f);
   std::vector<std::size_t> best;
+  std::size_t best_loose = 0;
   std::size_t best_surface = std::numeric_limits<std::size_t>::max();
   for (const std::size_t a : candidates) {
     std::vector<std::size_t> group;
-    for (const std::size_t b : candidates)
+    std::size_t loose = 0;
+    for (const std::size_t b : candidates) {
       if (agree (extents[a].size, extents[b].size))
         group.push_back (b);
+      if (loosely (extents[a].size, extents[b].size))
+        ++loose;
+    }
+    const std::size_t surface = extents[a].surface.size();
     if (group.size() > best.size() ||
-        (group.size() == best.size() && extents[a].surface.size() < best_surface)) {
+        (group.size() == best.size() &&
+         (loose > best_loose || (loose == best_loose && surface < best_surface)))) {
       best = std::move (group);
-      best_surface = extents[a].surface.size();
+      best_loose = loose;
+      best_surface = surface;
       representative = a;
     }
   }
@@ -148,8 +157,29 @@ modelSizesOfBoxes (const ObjectModels& models,
     sizes[m].size = extents[m][representative].size;
     sizes[m].box_in_model = models[m].instances[representative].pose.inverse() *
                             extents[m][representative].pose;
-    sizes[m].valid = static_cast<int> (group.size()) >= min_agreeing;
+    sizes[m].agreeing = static_cast<int> (group.size());
+    sizes[m].valid = sizes[m].agreeing >= min_agreeing;
   }
+}
+
+bool
+boxOfSize (const Eigen::Vector3f& size,
+           const ModelSize& own,
+           const ObjectModel& model,
+           const InstanceExtents& extents,
+           const SizeAgreement& agree,
+           Eigen::Matrix4f& box_in_model)
+{
+  if (own.valid && agree (size, own.size)) {
+    box_in_model = own.box_in_model;
+    return true;
+  }
+  for (const std::size_t i : measuredInstances (extents))
+    if (agree (size, extents[i].size)) {
+      box_in_model = model.instances[i].pose.inverse() * extents[i].pose;
+      return true;
+    }
+  return false;
 }
 
 std::string

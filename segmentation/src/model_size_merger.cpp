@@ -12,30 +12,6 @@ namespace mid {
 
 namespace {
 
-/** Box frame -> model frame of a box of `size` in `model`: the model's own box when its size
-  * (`own`) agrees, else the box of the first of its measured instances (`extents`) that has
-  * `size`; false if neither.
-  */
-bool
-boxOfSize (const Eigen::Vector3f& size,
-           const ModelSize& own,
-           const ObjectModel& model,
-           const InstanceExtents& extents,
-           const SizeAgreement& agree,
-           Eigen::Matrix4f& box_in_model)
-{
-  if (own.valid && agree (size, own.size)) {
-    box_in_model = own.box_in_model;
-    return true;
-  }
-  for (const std::size_t i : measuredInstances (extents))
-    if (agree (size, extents[i].size)) {
-      box_in_model = model.instances[i].pose.inverse() * extents[i].pose;
-      return true;
-    }
-  return false;
-}
-
 /** The boxes of one size in models a and b (box frame -> model frame): a's size and a box of
   * it in b, or else b's size and a box of it in a; false if neither model holds the other's.
   */

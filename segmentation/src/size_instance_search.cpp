@@ -147,13 +147,18 @@ boxHoldsObserved (const InstanceExtent& box,
   return false;
 }
 
-/** The model whose size `size` agrees with, the closest edge by edge if several do; -1 if
-  * none.
+/** The model of `size`, -1 if none: the closest (edge by edge) of the models whose size agrees
+  * with it, else the first whose size rests on one measured copy alone and which has another
+  * copy of `size` (boxOfSize()): with the object, two copies agree on it. `box_in_model` is
+  * then the box of `size` in that model.
   */
 int
 modelOfSize (const Eigen::Vector3f& size,
+             const ObjectModels& models,
              const ModelSizes& sizes,
-             const SizeAgreement& agree)
+             const std::vector<InstanceExtents>& extents,
+             const SizeAgreement& agree,
+             Eigen::Matrix4f& box_in_model)
 {
   int best = -1;
   float best_difference = std::numeric_limits<float>::infinity();
@@ -164,8 +169,13 @@ modelOfSize (const Eigen::Vector3f& size,
     if (difference < best_difference) {
       best = static_cast<int> (m);
       best_difference = difference;
+      box_in_model = sizes[m].box_in_model;
     }
   }
+  for (std::size_t m = 0; best < 0 && m < sizes.size(); ++m)
+    if (sizes[m].valid && sizes[m].agreeing < 2 &&
+        boxOfSize (size, ModelSize(), models[m], extents[m], agree, box_in_model))
+      best = static_cast<int> (m);
   return best;
 }
 
@@ -478,9 +488,11 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   if (!fitPlane (plane))
     return true;
   const SizeAgreement agree = agreement();
-  ModelSizes sizes;
-  if (!measureSizes (models, plane, sizes))
+  std::vector<InstanceExtents> extents;
+  if (!measureBoxes (models, plane, extents))
     return false;
+  ModelSizes sizes;
+  modelSizesOfBoxes (models, extents, agree, min_agreeing_, sizes);
   if (!discover_models_ &&
       std::none_of (sizes.begin(), sizes.end(), [] (const ModelSize& size) {
         return size.valid;
@@ -523,15 +535,16 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   // The model of the object's size, -1 if none; it joins that model unless one of its
   // keypoints went to another copy already.
   const auto joinModelOfItsSize = [&] (const FreeObject& object) {
-    const int m = modelOfSize (object.extent.size, sizes, agree);
+    Eigen::Matrix4f box_in_model = Eigen::Matrix4f::Identity();
+    const int m =
+        modelOfSize (object.extent.size, models, sizes, extents, agree, box_in_model);
     if (m < 0 || !untaken (object))
       return m;
-    addInstanceOfKeypoints (
-        *keypoints_,
-        *descriptors_,
-        object.keypoints,
-        object.extent.pose * sizes[static_cast<std::size_t> (m)].box_in_model.inverse(),
-        models[static_cast<std::size_t> (m)]);
+    addInstanceOfKeypoints (*keypoints_,
+                            *descriptors_,
+                            object.keypoints,
+                            object.extent.pose * box_in_model.inverse(),
+                            models[static_cast<std::size_t> (m)]);
     for (const auto k : object.keypoints)
       taken[static_cast<std::size_t> (k)] = true;
     ++found;

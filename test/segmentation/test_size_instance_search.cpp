@@ -168,6 +168,43 @@ TEST (SizeInstanceSearch, MeasuresACopyTouchingAFoundOneOutsideTheFoundOnesBox)
   expectNothingFound (searchIn (shorter), shorter.modelOf ({0, 1, 2}));
 }
 
+TEST (SizeInstanceSearch, FindsACopyByTheBoxOfTheOneCopyMeasuredWhole)
+{
+  // Box 1, a found copy, lies across the frame's right border (the table at 0.91 m shows
+  // x < 0.555 m): its box is measured 0.09 m long, on a smaller surface than box 0's. The two
+  // copies disagree, and the model's size is box 1's. Box 2, the same box on its side with
+  // another print, has box 0's size: with box 0, two copies agree on it.
+  std::vector<mid::test::BoxSpec> boxes = twoFlatOneOnItsSide();
+  boxes[1] = restingBox (kApplePrint, 0.525, -0.12, 0.0);
+  const Boxes scene (boxes);
+  mid::ObjectModels models = {scene.modelOf ({0, 1})};
+  mid::SizeInstanceSearch two_agreeing = searchIn (scene);
+  two_agreeing.setMinAgreeing (2);
+  expectNothingFound (two_agreeing, models[0]);
+
+  std::size_t found = 0;
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  EXPECT_EQ (found, 1u);
+  ASSERT_EQ (models[0].instances.size(), 3u);
+  const mid::ModelInstance& copy = models[0].instances[2];
+  EXPECT_EQ (scene.boxOf (copy.keypoints), 2);
+  Eigen::Matrix3d flat_in_side;
+  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  Eigen::Isometry3d truth = scene.scene.boxes[2].pose;
+  truth.linear() = truth.linear() * flat_in_side;
+  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
+  EXPECT_LT (
+      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+      0.004f);
+
+  // With a third copy whole, two agree on the model's size: the box of the one cut by the
+  // border is no size of it, and a box of that size (box 2 cut to 0.075 m, as box 1 is measured) is no copy.
+  boxes.push_back (restingBox (kApplePrint, -0.3, 0.2, 50.0));
+  boxes[2] = restingBox (kSoyPrint, 0.0, 0.12, 70.0, {0.075, 0.04, 0.09});
+  const Boxes agreeing (boxes);
+  expectNothingFound (searchIn (agreeing), agreeing.modelOf ({0, 1, 3}));
+}
+
 TEST (SizeInstanceSearch, RefusesBadInputAndLeavesTheModels)
 {
   const Boxes scene (twoFlatOneOnItsSide());

@@ -45,6 +45,13 @@ public:
   bool
   edgesAgree (float x, float y) const;
 
+  /** \brief The same agreement with both tolerances multiplied by `factor`. */
+  SizeAgreement
+  scaled (float factor) const
+  {
+    return {factor * absolute_, factor * relative_};
+  }
+
 private:
   float absolute_, relative_;
 };
@@ -61,6 +68,8 @@ struct ModelSize
 {
   /** \brief True if at least the required number of measured instances agree on `size`. */
   bool valid = false;
+  /** \brief How many measured instances agree on `size` (0 if none is measured). */
+  int agreeing = 0;
   /** \brief Box edges (metres), ascending. */
   Eigen::Vector3f size = Eigen::Vector3f::Zero();
   /** \brief Box frame -> model frame: the box of the instance that gave `size`, in the model
@@ -110,8 +119,11 @@ std::vector<std::size_t>
 measuredInstances (const InstanceExtents& extents);
 
 /** \brief The largest group of boxes of one size: among `candidates`, the box that agrees with
-  * the most of them (ties: the one with the smaller surface, as a surface is more often too
-  * large, joined with something, than too small), and the candidates that agree with it.
+  * the most of them; ties go to the box that the most agree with at twice the tolerances (two
+  * copies measured whole differ by a few millimetres more than the tolerance now and then, a
+  * box too small or too large, hidden in part or joined, by far more), then to the one with
+  * the smaller surface (a surface is more often too large, joined with something, than too
+  * small). Returns the candidates that agree with it.
   * \param[in] extents the boxes
   * \param[in] candidates indices into `extents` of the boxes to group, each with a size
   * \param[in] agree when two sizes are one
@@ -169,6 +181,26 @@ modelSizesOfBoxes (const ObjectModels& models,
                    const SizeAgreement& agree,
                    int min_agreeing,
                    ModelSizes& sizes);
+
+/** \brief A box of `size` in `model` (box frame -> model frame): the model's own box when its
+  * size (`own`, if valid) agrees with `size`, else the box of the first of its measured
+  * instances (`extents`, one per instance) that has `size`. A copy measured whole gives the
+  * size of a model whose other copies, joined with a neighbour or hidden in part, gave another.
+  * \param[in] size the size looked for (edges ascending, metres)
+  * \param[in] own the model's size
+  * \param[in] model the model
+  * \param[in] extents its instances' boxes, in order
+  * \param[in] agree when two sizes are one
+  * \param[out] box_in_model the box's frame in the model frame; unchanged if none
+  * \return false if neither the model's size nor a box of its instances agrees with `size`
+  */
+bool
+boxOfSize (const Eigen::Vector3f& size,
+           const ModelSize& own,
+           const ObjectModel& model,
+           const InstanceExtents& extents,
+           const SizeAgreement& agree,
+           Eigen::Matrix4f& box_in_model);
 
 /** \brief What the steps that measure the boxes of models on the support plane and compare
   * their sizes share (ModelSizeMerger, ModelSizeSplitter, ModelBoxExtender,

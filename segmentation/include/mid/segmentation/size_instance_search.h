@@ -28,7 +28,10 @@ namespace mid {
   *    measured on its own part alone;
   * 3. fits a box to each object that holds no instance's keypoint and at least
   *    `min_keypoints` free keypoints, and gives it to the model whose size it agrees with
-  *    (the closest, edge by edge, if several do) as a new instance, the objects beside the
+  *    (the closest, edge by edge, if several do), else to a model whose size rests on one
+  *    measured copy alone and which has another measured copy of the object's size
+  *    (boxOfSize(): no two of its copies agree, as all but one are joined with a neighbour or
+  *    hidden in part, and with the object two do), as a new instance, the objects beside the
   *    found copies first, none that shares a keypoint with an instance added before. Its
   *    pose is the one that brings the model's box onto the object's, right up to the box's
   *    symmetries (a half turn of a box, a quarter turn of a square one; which face the copy
