@@ -361,10 +361,11 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
   EXPECT_EQ (alone_boxes, (std::set<int>{0, 1}));
 }
 
-TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAlone)
+TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAloneWhenAsked)
 {
   // The two copies of one size lie on a low tray, which surrounds them: their surfaces could
-  // be fragments of a pile or a bin.
+  // be fragments of a pile or a bin, and a search asked for objects standing alone (at most
+  // a quarter of the pixels around them taken) makes no model of them.
   constexpr double kTray = 0.03;
   const auto on_tray = [] (const char* print, double x, double y, double roll) {
     return mid::test::BoxSpec{
@@ -381,10 +382,11 @@ TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAlone)
                       on_tray (kSoyPrint, 0.12, 0.03, -20.0)});
   mid::SizeInstanceSearch search = searchIn (scene);
   search.setDiscoverModels (true);
+  search.setMaxSurroundedShare (0.25f);
   std::size_t found = 0;
   EXPECT_TRUE (discoverBySize (search, found).empty());
   EXPECT_EQ (found, 0u);
-  // The same copies with the surroundings ignored: one model of the two.
+  // The same copies with the surroundings ignored (the default): one model of the two.
   search.setMaxSurroundedShare (1.0f);
   const mid::ObjectModels models = discoverBySize (search, found);
   ASSERT_EQ (models.size(), 1u);

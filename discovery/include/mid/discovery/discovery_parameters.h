@@ -374,14 +374,15 @@ struct DiscoveryParameters
   /** \brief With the size search, also make models of the objects that repeat with no two
     * copies showing the same surface, by size alone (not in the paper;
     * SizeInstanceSearch::setDiscoverModels()): two or more objects of no model's size, each
-    * standing alone on the support plane (at most size_discovery_max_surrounded, in [0, 1],
-    * of the pixels around it hold something else than the plane and its own box), with a
-    * shortest edge of at least size_discovery_min_edge (metres, >= 0) and sizes that agree,
-    * become a model. Two different products of one size standing apart become one model.
+    * with a shortest edge of at least size_discovery_min_edge (metres, >= 0) and, when
+    * size_discovery_max_surrounded (in [0, 1]) is below 1, standing alone on the support
+    * plane (at most that share of the pixels around it hold something else than the plane
+    * and its own box), with sizes that agree, become a model. Two different products of one
+    * size standing apart become one model.
     */
   ///@{
   bool size_discovery = true;
-  float size_discovery_max_surrounded = 0.25f;
+  float size_discovery_max_surrounded = 1.0f;
   float size_discovery_min_edge = 0.03f;
   ///@}
   /** \brief After the size search, remove the instances of a model whose box would
