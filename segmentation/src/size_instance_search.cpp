@@ -172,6 +172,8 @@ modelOfSize (const Eigen::Vector3f& size,
       box_in_model = sizes[m].box_in_model;
     }
   }
+  // No two of such a model's measured copies agree (its size is one copy's): ModelSize() has
+  // no size of its own, so only its copies' boxes are looked at.
   for (std::size_t m = 0; best < 0 && m < sizes.size(); ++m)
     if (sizes[m].valid && sizes[m].agreeing < 2 &&
         boxOfSize (size, ModelSize(), models[m], extents[m], agree, box_in_model))
@@ -565,27 +567,28 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   };
   for (const FreeObject& object : beside_found)
     joinModelOrCutIntoCopies (object);
-  // An object standing alone, of no model's size, may found a model with others of its size;
-  // the objects of no model's size that do not stand alone may be copies of it touching each
-  // other flush.
-  std::vector<std::size_t> alone, joined;
+  // An object of no model's size, of the shortest edge asked for (and standing alone when
+  // asked), may found a model with others of its size; the other objects of no model's size
+  // may be copies of it touching each other flush.
+  std::vector<std::size_t> founders, others;
   for (std::size_t o = 0; o < free_objects.size(); ++o) {
     const FreeObject& object = free_objects[o];
     if (joinModelOrCutIntoCopies (object) >= 0 || !discover_models_ ||
         !untaken (object))
       continue;
     if (object.extent.size.minCoeff() >= min_model_edge_ &&
-        surroundedShare (organized, plane, object.extent, 2.0f * plane_tolerance_) <=
-            max_surrounded_share_)
-      alone.push_back (o);
+        (max_surrounded_share_ >= 1.0f ||
+         surroundedShare (organized, plane, object.extent, 2.0f * plane_tolerance_) <=
+             max_surrounded_share_))
+      founders.push_back (o);
     else
-      joined.push_back (o);
+      others.push_back (o);
   }
   // The model frame is the first copy's box frame (centred on the landmarks after).
-  std::vector<std::size_t> candidates = alone;
-  candidates.insert (candidates.end(), joined.begin(), joined.end());
+  std::vector<std::size_t> candidates = founders;
+  candidates.insert (candidates.end(), others.begin(), others.end());
   std::vector<bool> used (free_objects.size(), false);
-  for (const auto& group : groupsOfOneSize (free_objects, alone, agree)) {
+  for (const auto& group : groupsOfOneSize (free_objects, founders, agree)) {
     FreeObjects copies;
     std::vector<std::size_t> sources;
     for (const std::size_t o : group)

@@ -170,10 +170,11 @@ TEST (SizeInstanceSearch, MeasuresACopyTouchingAFoundOneOutsideTheFoundOnesBox)
 
 TEST (SizeInstanceSearch, FindsACopyByTheBoxOfTheOneCopyMeasuredWhole)
 {
-  // Box 1, a found copy, lies across the frame's right border (the table at 0.91 m shows
-  // x < 0.555 m): its box is measured 0.09 m long, on a smaller surface than box 0's. The two
-  // copies disagree, and the model's size is box 1's. Box 2, the same box on its side with
-  // another print, has box 0's size: with box 0, two copies agree on it.
+  // Box 1, a found copy, lies across the frame's right border (at the boxes' tops, 0.91 m from
+  // the camera, the frame shows x < 0.555 m): its box is measured 0.075 x 0.09 m, on a smaller
+  // surface than box 0's. The two copies disagree (no size with two agreeing), and the
+  // model's size is box 1's. Box 2, the same box on its side with another print, has box 0's
+  // size: with box 0, two copies agree on it.
   std::vector<mid::test::BoxSpec> boxes = twoFlatOneOnItsSide();
   boxes[1] = restingBox (kApplePrint, 0.525, -0.12, 0.0);
   const Boxes scene (boxes);
@@ -198,7 +199,8 @@ TEST (SizeInstanceSearch, FindsACopyByTheBoxOfTheOneCopyMeasuredWhole)
       0.004f);
 
   // With a third copy whole, two agree on the model's size: the box of the one cut by the
-  // border is no size of it, and a box of that size (box 2 cut to 0.075 m, as box 1 is measured) is no copy.
+  // border is no size of it, and a box of that size (box 2 cut to 0.075 m, as box 1 is
+  // measured) is no copy.
   boxes.push_back (restingBox (kApplePrint, -0.3, 0.2, 50.0));
   boxes[2] = restingBox (kSoyPrint, 0.0, 0.12, 70.0, {0.075, 0.04, 0.09});
   const Boxes agreeing (boxes);

@@ -141,8 +141,8 @@ largestSizeGroup (const InstanceExtents& extents,
   *
   * The surfaces of all instances of all models grow at once from their keypoints' pixels
   * (growInstanceSurfaces()), a box is fitted to each (fitInstanceBox()), and each model takes
-  * the size that most of its measured instances agree on (ties: the instance with the smaller
-  * surface, as a surface is more often too large, joined with something, than too small).
+  * the size that most of its measured instances agree on (largestSizeGroup(), which also says
+  * how ties are broken).
   * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)
   * \param[in] plane the support plane (fitSupportPlane())
   * \param[in] keypoint_pixels each keypoint's pixel in `organized` (row * width + column)

@@ -19,9 +19,9 @@ namespace mid {
   *    all instances grow at once from their keypoints (growInstanceSurfaces()), stop at
   *    creases where two objects meet, and split a surface that still joins touching copies
   *    between them; a box is fitted to each (fitInstanceBox());
-  * 3. gives each model the size that most of its measured instances agree on (ties: the
-  *    instance with the smaller surface, as a surface is more often too large, joined with
-  *    something, than too small), when at least `min_agreeing` do;
+  * 3. gives each model the size that most of its measured instances agree on
+  *    (largestSizeGroup(): ties go to the box that the most agree with at twice the
+  *    tolerances, then to the smaller surface), when at least `min_agreeing` do;
   * 4. merges two models whose sizes agree within the size tolerance, edge by edge, the smaller
   *    model into the larger: the boxes' frames (axes along the edges in ascending length)
   *    give the transform between the model frames, so the merged poses are those of the box,

@@ -105,8 +105,8 @@ public:
   }
   ///@}
 
-  /** \brief Also make models of the objects that stand alone on the plane and share a size
-    * that no model has (step 4 above; default false).
+  /** \brief Also make models of the objects that share a size that no model has (step 4
+    * above; default false).
     */
   ///@{
   void
