@@ -4,6 +4,7 @@
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size.h>
 #include <mid/segmentation/size_instance_search.h>
+#include <mid/segmentation/touching_surfaces.h>
 
 #include <pcl/console/print.h>
 
@@ -91,44 +92,38 @@ withoutFoundCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
   return unclaimed;
 }
 
-/** Join the seeds whose surfaces touch: two 4-neighbouring pixels of two surfaces whose points
-  * are closer than max_step. A seed whose surface is empty (its pixel was another seed's, as
-  * SIFT puts keypoints of several orientations on one pixel) joins the seed that holds its
-  * pixel.
+/** Pairs of 4-neighbouring pixels along which the surfaces of two seeds must touch for the
+  * seeds to be one object (touchingSurfaces()): a border, not a point where two objects meet.
   */
-void
+constexpr int kMinContactPixels = 3;
+
+/** Join the seeds whose surfaces touch along a border (touchingSurfaces()). A seed whose
+  * surface is empty (its pixel was another seed's, as SIFT puts keypoints of several
+  * orientations on one pixel) joins the seed that holds its pixel.
+  */
+bool
 joinTouchingSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
                       const std::vector<pcl::Indices>& seeds,
                       const std::vector<pcl::Indices>& surfaces,
                       float max_step,
                       detail::DisjointSets& sets)
 {
+  std::vector<std::pair<std::size_t, std::size_t>> touching;
+  if (!touchingSurfaces (organized, surfaces, max_step, kMinContactPixels, touching))
+    return false;
+  for (const auto& [a, b] : touching)
+    sets.unite (a, b);
   constexpr int kNone = -1;
-  std::vector<int> label (organized.size(), kNone);
+  std::vector<int> holder (organized.size(), kNone);
   for (std::size_t s = 0; s < surfaces.size(); ++s)
     for (const auto pixel : surfaces[s])
-      label[static_cast<std::size_t> (pixel)] = static_cast<int> (s);
-  const auto width = static_cast<std::size_t> (organized.width);
-  for (std::size_t pixel = 0; pixel < label.size(); ++pixel) {
-    if (label[pixel] == kNone)
-      continue;
-    const bool has_right = (pixel + 1) % width != 0;
-    for (const std::size_t next : {has_right ? pixel + 1 : pixel, pixel + width}) {
-      if (next == pixel || next >= label.size() || label[next] == kNone ||
-          label[next] == label[pixel])
-        continue;
-      if ((organized[next].getVector3fMap() - organized[pixel].getVector3fMap())
-              .norm() < max_step)
-        sets.unite (static_cast<std::size_t> (label[pixel]),
-                    static_cast<std::size_t> (label[next]));
-    }
-  }
+      holder[static_cast<std::size_t> (pixel)] = static_cast<int> (s);
   for (std::size_t s = 0; s < seeds.size(); ++s)
     if (surfaces[s].empty())
       for (const auto pixel : seeds[s])
-        if (label[static_cast<std::size_t> (pixel)] != kNone)
-          sets.unite (
-              s, static_cast<std::size_t> (label[static_cast<std::size_t> (pixel)]));
+        if (const int h = holder[static_cast<std::size_t> (pixel)]; h != kNone)
+          sets.unite (s, static_cast<std::size_t> (h));
+  return true;
 }
 
 /** True if one of `keypoints` marked in `observed` lies inside `box`, farther than `margin`
@@ -313,7 +308,8 @@ freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                              surfaces))
     return false;
   detail::DisjointSets sets (seeds.pixels.size());
-  joinTouchingSurfaces (cloud, seeds.pixels, surfaces, growth.max_step, sets);
+  if (!joinTouchingSurfaces (cloud, seeds.pixels, surfaces, growth.max_step, sets))
+    return false;
 
   // An instance's seed is the smallest of its set.
   std::vector<std::vector<std::size_t>> members (seeds.pixels.size());

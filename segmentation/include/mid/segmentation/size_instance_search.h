@@ -22,7 +22,9 @@ namespace mid {
   *    copies agree on one size;
   * 2. grows the surfaces of all instances and of every keypoint that no instance observes at
   *    once (growInstanceSurfaces(): stopped at creases and depth steps), and joins the
-  *    surfaces that touch into objects; and once more with the points inside the boxes of
+  *    surfaces that touch along a border (touchingSurfaces(), 3 pairs of neighbouring pixels
+  *    at least: two objects that touch at a point stay apart) into objects; and once more
+  *    with the points inside the boxes of
   *    the found copies of the measured models (their poses times the model's box, grown by
   *    2 mm) left out, so that a copy touching a found one flush, their surfaces one, is
   *    measured on its own part alone;
