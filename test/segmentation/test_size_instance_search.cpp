@@ -54,6 +54,23 @@ expectNothingFound (const mid::SizeInstanceSearch& search,
   EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
 }
 
+/** `copy`, an instance of a model in the frame of flat box 0, lies on box 2 (lying on its
+  * side) at its pose, up to the box's symmetries (3 deg, 4 mm): box 0's axes x (0.12), y
+  * (0.09), z (0.04) are box 2's x, z and -y.
+  */
+void
+expectPoseOfTheBoxOnItsSide (const Boxes& scene, const mid::ModelInstance& copy)
+{
+  Eigen::Matrix3d flat_in_side;
+  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  Eigen::Isometry3d truth = scene.scene.boxes[2].pose;
+  truth.linear() = truth.linear() * flat_in_side;
+  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
+  EXPECT_LT (
+      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
+      0.004f);
+}
+
 } // namespace
 
 TEST (SizeInstanceSearch, FindsACopyShowingAnotherFaceUpByItsSize)
@@ -78,16 +95,8 @@ TEST (SizeInstanceSearch, FindsACopyShowingAnotherFaceUpByItsSize)
              before.landmarks.size() + copy.keypoints.size());
   EXPECT_EQ (models[0].descriptors.size(),
              before.descriptors.size() + copy.keypoints.size());
-  // Its pose brings the model (box 0's frame) onto box 2, up to the box's symmetries: box 0's
-  // axes x (0.12), y (0.09), z (0.04) are box 2's x, z and -y.
-  Eigen::Matrix3d flat_in_side;
-  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-  Eigen::Isometry3d truth = scene.scene.boxes[2].pose;
-  truth.linear() = truth.linear() * flat_in_side;
-  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
-  EXPECT_LT (
-      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
-      0.004f);
+  // Its pose brings the model (box 0's frame) onto box 2, up to the box's symmetries.
+  expectPoseOfTheBoxOnItsSide (scene, copy);
 
   // Box 2 now holds an instance: a second search adds none.
   expectNothingFound (searchIn (scene), models[0]);
@@ -189,14 +198,7 @@ TEST (SizeInstanceSearch, FindsACopyByTheBoxOfTheOneCopyMeasuredWhole)
   ASSERT_EQ (models[0].instances.size(), 3u);
   const mid::ModelInstance& copy = models[0].instances[2];
   EXPECT_EQ (scene.boxOf (copy.keypoints), 2);
-  Eigen::Matrix3d flat_in_side;
-  flat_in_side << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-  Eigen::Isometry3d truth = scene.scene.boxes[2].pose;
-  truth.linear() = truth.linear() * flat_in_side;
-  EXPECT_LT (rotationErrorModuloBox (copy.pose, truth), 3.0);
-  EXPECT_LT (
-      (copy.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
-      0.004f);
+  expectPoseOfTheBoxOnItsSide (scene, copy);
 
   // With a third copy whole, two agree on the model's size: the box of the one cut by the
   // border is no size of it, and a box of that size (box 2 cut to 0.075 m, as box 1 is
