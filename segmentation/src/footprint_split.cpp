@@ -1,3 +1,5 @@
+#include "footprint_raster.h"
+
 #include <mid/segmentation/footprint_split.h>
 
 #include <opencv2/imgproc.hpp>
@@ -32,6 +34,10 @@ FootprintRectangle::distance (const Eigen::Vector2f& point) const
 
 namespace {
 
+using detail::kMaxRasterCells;
+using detail::Raster;
+using detail::rasterizeFootprint;
+
 /** A footprint of fewer rectangles' area than this is one copy, not a group. */
 constexpr double kMinCopies = 1.6;
 /** A footprint of more copies' area than this is left whole (a wall of boxes, not a group). */
@@ -40,31 +46,12 @@ constexpr std::size_t kMaxCopies = 32;
 constexpr float kCellsPerEdge = 10.0f;
 /** Share of the footprint the rectangles placed must cover. */
 constexpr double kMinExplained = 0.8;
-/** Largest raster, in cells. */
-constexpr double kMaxCells = 4.0e6;
 /** How far from a right angle a corner of the outline may be (degrees). */
 constexpr double kCornerTolerance = 20.0;
 /** How far the simplified outline may stray from the hull (cells). */
 constexpr double kOutlineTolerance = 2.0;
 /** Width (cells) below which what a placed rectangle leaves is a sliver, not a copy. */
 constexpr int kSliverCells = 5;
-
-/** The footprint on a grid: cell (column, row) has its centre at origin + (column, row) *
-  * cell.
-  */
-struct Raster
-{
-  Eigen::Vector2f origin = Eigen::Vector2f::Zero();
-  float cell = 0.0f;
-  cv::Mat occupied; ///< CV_8U, non-zero where a point falls
-
-  Eigen::Vector2f
-  centreOf (int column, int row) const
-  {
-    return origin + cell * Eigen::Vector2f (static_cast<float> (column),
-                                            static_cast<float> (row));
-  }
-};
 
 /** Visit the cells whose centres lie in `rectangle`, as visit(column, row). */
 template <typename Visit>
@@ -242,35 +229,14 @@ splitFootprint (const std::vector<Eigen::Vector2f,
   }
   if (points.empty())
     return true;
-  Eigen::Vector2f low = points.front(), high = points.front();
-  for (const auto& point : points) {
-    low = low.cwiseMin (point);
-    high = high.cwiseMax (point);
-  }
-  const Eigen::Vector2f extent = (high - low) / cell;
-  if (!extent.allFinite() || (static_cast<double> (extent.x()) + 3.0) *
-                                     (static_cast<double> (extent.y()) + 3.0) >
-                                 kMaxCells) {
+  Raster raster;
+  if (!rasterizeFootprint (points, cell, raster)) {
     PCL_ERROR (
         "[mid::splitFootprint] The footprint spans more than %.0f cells of %g m.\n",
-        kMaxCells,
+        kMaxRasterCells,
         static_cast<double> (cell));
     return false;
   }
-  Raster raster;
-  raster.cell = cell;
-  raster.origin = low - Eigen::Vector2f::Constant (cell);
-  raster.occupied = cv::Mat::zeros (
-      static_cast<int> (extent.y()) + 3, static_cast<int> (extent.x()) + 3, CV_8U);
-  for (const auto& point : points) {
-    const Eigen::Vector2f at = (point - raster.origin) / cell;
-    raster.occupied.at<std::uint8_t> (static_cast<int> (std::lround (at.y())),
-                                      static_cast<int> (std::lround (at.x()))) = 1;
-  }
-  cv::morphologyEx (raster.occupied,
-                    raster.occupied,
-                    cv::MORPH_CLOSE,
-                    cv::getStructuringElement (cv::MORPH_RECT, cv::Size (3, 3)));
   const double total = cv::countNonZero (raster.occupied);
   // A copy alone covers its rectangle's cells and the border the raster adds around it.
   const double copy_cells = (static_cast<double> (size.x() / cell) + 1.0) *

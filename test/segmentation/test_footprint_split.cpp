@@ -1,5 +1,7 @@
 // splitFootprint on footprints sampled from rectangles at known places: the copies of one box
 // that touch flush, cut into their rectangles.
+#include "sampled_footprints.h"
+
 #include <mid/segmentation/footprint_split.h>
 
 #include <gtest/gtest.h>
@@ -9,7 +11,7 @@
 
 namespace {
 
-using Points = std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>>;
+using Points = mid::test::FootprintPoints;
 
 /** The copies' rectangle: 60 x 160 mm. */
 const Eigen::Vector2f kCopy (0.06f, 0.16f);
@@ -19,26 +21,13 @@ constexpr float kCoverage = 0.85f;
 mid::FootprintRectangle
 rectangle (float x, float y, float degrees, const Eigen::Vector2f& size = kCopy)
 {
-  mid::FootprintRectangle r;
-  r.centre = Eigen::Vector2f (x, y);
-  const float angle = degrees * static_cast<float> (M_PI) / 180.0f;
-  r.direction = Eigen::Vector2f (std::cos (angle), std::sin (angle));
-  r.size = size;
-  return r;
+  return mid::test::footprintRectangle (x, y, degrees, size);
 }
 
-/** Points 2 mm apart over the rectangles. */
 Points
 sampled (const std::vector<mid::FootprintRectangle>& rectangles)
 {
-  Points points;
-  for (const auto& r : rectangles) {
-    const Eigen::Vector2f across (-r.direction.y(), r.direction.x());
-    for (float a = -0.5f * r.size.x(); a <= 0.5f * r.size.x(); a += 0.002f)
-      for (float b = -0.5f * r.size.y(); b <= 0.5f * r.size.y(); b += 0.002f)
-        points.push_back (r.centre + a * r.direction + b * across);
-  }
-  return points;
+  return mid::test::sampledFootprint (rectangles);
 }
 
 /** Angle (degrees) between two rectangles' directions, modulo a half turn. */
@@ -126,12 +115,8 @@ TEST (FootprintSplit, LeavesOneCopyAndOtherShapesWhole)
                            found));
   EXPECT_TRUE (found.empty());
   // A disc of the same area as two copies.
-  Points disc;
-  const float radius = std::sqrt (2.0f * kCopy.prod() / static_cast<float> (M_PI));
-  for (float x = -radius; x <= radius; x += 0.002f)
-    for (float y = -radius; y <= radius; y += 0.002f)
-      if (x * x + y * y <= radius * radius)
-        disc.emplace_back (x, y);
+  const Points disc = mid::test::sampledDisc (
+      std::sqrt (2.0f * kCopy.prod() / static_cast<float> (M_PI)));
   ASSERT_TRUE (mid::splitFootprint (disc, kCopy, kCell, kCoverage, found));
   EXPECT_TRUE (found.empty());
 }

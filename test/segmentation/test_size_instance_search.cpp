@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace {
@@ -280,6 +281,59 @@ discoverBySize (const mid::SizeInstanceSearch& search, std::size_t& found)
   return models;
 }
 
+/** The box that 95 % of `keypoints` at least lie on, -1 if none: a cut between copies
+  * touching each other may give one on the seam to the neighbour.
+  */
+int
+mostlyOnBox (const Boxes& scene, const pcl::Indices& keypoints)
+{
+  std::map<int, std::size_t> count;
+  for (const auto k : keypoints)
+    ++count[scene.box_of[static_cast<std::size_t> (k)]];
+  for (const auto& [box, n] : count)
+    if (box >= 0 &&
+        static_cast<double> (n) >= 0.95 * static_cast<double> (keypoints.size()))
+      return box;
+  return -1;
+}
+
+/** Each instance of `model` lies on a box of `scene` (mostlyOnBox()), and its pose relative
+  * to the first instance is the boxes' own, up to the box's symmetries (3 deg): it moves the
+  * first box's centre onto the other's (within `tolerance` metres). Returns the boxes, one per
+  * instance, -1 for none.
+  */
+std::vector<int>
+expectPosesRelativeToTheFirst (const Boxes& scene,
+                               const mid::ObjectModel& model,
+                               float tolerance)
+{
+  std::vector<int> boxes;
+  for (const auto& instance : model.instances)
+    boxes.push_back (mostlyOnBox (scene, instance.keypoints));
+  if (boxes.empty() || boxes.front() < 0) {
+    ADD_FAILURE() << "the first instance lies on no box";
+    return boxes;
+  }
+  const Eigen::Isometry3d& a =
+      scene.scene.boxes[static_cast<std::size_t> (boxes.front())].pose;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (boxes[i] < 0) {
+      ADD_FAILURE() << "instance " << i << " lies on no box";
+      continue;
+    }
+    const Eigen::Isometry3d& b =
+        scene.scene.boxes[static_cast<std::size_t> (boxes[i])].pose;
+    const Eigen::Matrix4f relative =
+        model.instances[i].pose * model.instances[0].pose.inverse();
+    EXPECT_LT (rotationErrorModuloBox (relative * a.matrix().cast<float>(), b), 3.0);
+    const Eigen::Vector3f moved =
+        relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
+        relative.topRightCorner<3, 1>();
+    EXPECT_LT ((moved - b.translation().cast<float>()).norm(), tolerance);
+  }
+  return boxes;
+}
+
 } // namespace
 
 TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
@@ -296,23 +350,8 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
   EXPECT_EQ (found, 2u);
   const mid::ObjectModel& model = models[0];
   ASSERT_EQ (model.instances.size(), 2u);
-  const int first = scene.boxOf (model.instances[0].keypoints);
-  const int second = scene.boxOf (model.instances[1].keypoints);
-  EXPECT_EQ (std::min (first, second), 0);
-  EXPECT_EQ (std::max (first, second), 1);
-  ASSERT_GE (std::min (first, second), 0);
-  // The relative pose of the two instances is the boxes' own, up to the box's symmetries: it
-  // moves the first box's centre onto the second's.
-  const Eigen::Isometry3d& a = scene.scene.boxes[static_cast<std::size_t> (first)].pose;
-  const Eigen::Isometry3d& b =
-      scene.scene.boxes[static_cast<std::size_t> (second)].pose;
-  const Eigen::Matrix4f relative =
-      model.instances[1].pose * model.instances[0].pose.inverse();
-  EXPECT_LT (rotationErrorModuloBox (relative * a.matrix().cast<float>(), b), 3.0);
-  const Eigen::Vector3f moved =
-      relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
-      relative.topRightCorner<3, 1>();
-  EXPECT_LT ((moved - b.translation().cast<float>()).norm(), 0.005f);
+  const std::vector<int> boxes = expectPosesRelativeToTheFirst (scene, model, 0.005f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
 
   // Objects whose shortest edge (0.04 here) is below the smallest a model may have.
   search.setMinModelEdge (0.05f);
@@ -332,25 +371,8 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
   EXPECT_EQ (found, 4u);
   const mid::ObjectModel& model = models[0];
   ASSERT_EQ (model.instances.size(), 4u);
-  std::set<int> boxes;
-  const int first = scene.boxOf (model.instances[0].keypoints);
-  ASSERT_GE (first, 0);
-  const Eigen::Isometry3d& a = scene.scene.boxes[static_cast<std::size_t> (first)].pose;
-  for (const auto& instance : model.instances) {
-    const int box = scene.boxOf (instance.keypoints);
-    ASSERT_GE (box, 0);
-    boxes.insert (box);
-    // Each instance's pose relative to the first is the boxes' own, up to the box's
-    // symmetries.
-    const Eigen::Isometry3d& b = scene.scene.boxes[static_cast<std::size_t> (box)].pose;
-    const Eigen::Matrix4f relative = instance.pose * model.instances[0].pose.inverse();
-    EXPECT_LT (rotationErrorModuloBox (relative * a.matrix().cast<float>(), b), 3.0);
-    const Eigen::Vector3f moved =
-        relative.topLeftCorner<3, 3>() * a.translation().cast<float>() +
-        relative.topRightCorner<3, 1>();
-    EXPECT_LT ((moved - b.translation().cast<float>()).norm(), 0.006f);
-  }
-  EXPECT_EQ (boxes, (std::set<int>{0, 1, 2, 3}));
+  const std::vector<int> boxes = expectPosesRelativeToTheFirst (scene, model, 0.006f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
 
   // The boxes standing alone of another size: the touching ones are not cut into them.
   const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
@@ -415,4 +437,39 @@ TEST (SizeInstanceSearch, TallObjectsStandAloneThoughTheirSidesShow)
   const mid::ObjectModels models = discoverBySize (search, found);
   ASSERT_EQ (models.size(), 1u);
   EXPECT_EQ (found, 2u);
+}
+
+TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline)
+{
+  // Two boxes of one size and two prints touch side by side, shifted along their length by
+  // 5 cm: one object of no size seen elsewhere, whose footprint is no rectangle. No model to
+  // start from.
+  const Boxes scene ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
+                      restingBox (kSoyPrint, 0.05, 0.19, 180.0)});
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  std::size_t found = 0;
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, 2u);
+  ASSERT_EQ (models[0].instances.size(), 2u);
+  const std::vector<int> boxes =
+      expectPosesRelativeToTheFirst (scene, models[0], 0.006f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+
+  // Not shifted, their footprint is a rectangle that one box could make: left whole.
+  const Boxes flush ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
+                      restingBox (kSoyPrint, 0.0, 0.19, 180.0)});
+  mid::SizeInstanceSearch flush_search = searchIn (flush);
+  flush_search.setDiscoverModels (true);
+  EXPECT_TRUE (discoverBySize (flush_search, found).empty());
+  EXPECT_EQ (found, 0u);
+
+  // Shifted, but of two sizes: the parts do not agree.
+  const Boxes two_sizes (
+      {restingBox (kApplePrint, 0.0, 0.1, 0.0),
+       restingBox (kSoyPrint, 0.05, 0.2, 180.0, {0.12, 0.11, 0.04})});
+  mid::SizeInstanceSearch two_sizes_search = searchIn (two_sizes);
+  two_sizes_search.setDiscoverModels (true);
+  EXPECT_TRUE (discoverBySize (two_sizes_search, found).empty());
 }

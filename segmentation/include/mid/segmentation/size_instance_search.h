@@ -54,7 +54,13 @@ namespace mid {
   *    model's size (standing alone or not) that are two or more of its copies touching each
   *    other flush, largest groups first. The size of an object seen once cuts nothing: a
   *    box of another size that two of its footprints tile (a cookie box, two juice cartons
-  *    lying flush) is too common.
+  *    lying flush) is too common. What is left may be two or three copies of one box, none
+  *    seen alone, touching each other with their tops at one height: when the object's
+  *    footprint is no rectangle (no one box could have made it) and nothing in front hides
+  *    much of its outline (occludedOutlineShare()), the edges of its outline between right
+  *    angles give the copies' rectangle (footprintCopySizes()), the object's height the third
+  *    edge, and a cut into parts of one size, which do not tile a rectangle
+  *    (rectanglesFill()), makes a model of them.
   *
   * An object touching another is measured with it and agrees with no model's size, unless
   * the other is a found copy of a measured model or both are copies of one touching flush;
