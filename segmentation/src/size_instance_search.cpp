@@ -540,8 +540,7 @@ copiesOfItsOutline (const pcl::PointCloud<pcl::PointXYZ>& organized,
   for (const auto& rectangle : rectangles) {
     Eigen::Vector3f box (heightOf (object.extent, plane), rectangle.x(), rectangle.y());
     std::sort (box.data(), box.data() + 3);
-    const FreeObjects parts =
-        flushCopies (organized, plane, keypoints, object, box, agree);
+    FreeObjects parts = flushCopies (organized, plane, keypoints, object, box, agree);
     const bool copies =
         parts.size() >= 2 &&
         std::all_of (parts.begin(), parts.end(), [&] (const FreeObject& part) {
