@@ -292,7 +292,8 @@ struct Growth
 };
 
 /** The objects of free keypoints alone (at least `min_keypoints`) whose surfaces, grown in
-  * `cloud` (`organized` or a part of it), give a box that holds no instance's keypoint.
+  * `cloud` (`organized` or a part of it), give a box that holds no instance's keypoint; those
+  * whose box does hold one go to `boxing_found`, if given.
   */
 bool
 freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
@@ -302,9 +303,12 @@ freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
              const KeypointCloud& keypoints,
              const Growth& growth,
              int min_keypoints,
-             FreeObjects& objects)
+             FreeObjects& objects,
+             FreeObjects* boxing_found = nullptr)
 {
   objects.clear();
+  if (boxing_found != nullptr)
+    boxing_found->clear();
   std::vector<pcl::Indices> surfaces;
   if (!growInstanceSurfaces (cloud,
                              plane,
@@ -332,9 +336,12 @@ freeObjects (const pcl::PointCloud<pcl::PointXYZ>& cloud,
           free_object.pixels.end(), surfaces[s].begin(), surfaces[s].end());
       free_object.keypoints.push_back (seeds.free[s - seeds.instances]);
     }
-    if (fitInstanceBox (organized, plane, free_object.pixels, free_object.extent) &&
-        !boxHoldsObserved (free_object.extent, keypoints, seeds.observed, kBoxMargin))
+    if (!fitInstanceBox (organized, plane, free_object.pixels, free_object.extent))
+      continue;
+    if (!boxHoldsObserved (free_object.extent, keypoints, seeds.observed, kBoxMargin))
       objects.push_back (free_object);
+    else if (boxing_found != nullptr)
+      boxing_found->push_back (free_object);
   }
   return true;
 }
@@ -641,7 +648,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   // with the points inside those copies' boxes left out.
   const ObjectSeeds seeds = objectSeeds (models, surface_.keypoint_pixels);
   const Growth growth{max_step_, max_radius_, plane_tolerance_};
-  FreeObjects free_objects, beside_found;
+  FreeObjects free_objects, beside_found, boxing_found;
   const auto boxes = foundCopyBoxes (models, sizes);
   if (!freeObjects (organized,
                     organized,
@@ -650,7 +657,8 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
                     *keypoints_,
                     growth,
                     min_keypoints_,
-                    free_objects) ||
+                    free_objects,
+                    &boxing_found) ||
       (!boxes.empty() && !freeObjects (withoutFoundCopies (organized, boxes),
                                        organized,
                                        plane,
@@ -779,6 +787,24 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     if (copies.size() < 2)
       continue;
     used[o] = true;
+    addModelOfCopies (copies);
+  }
+  // An object that is no rectangle has a box that may reach around a found copy: its parts'
+  // boxes must not.
+  for (const FreeObject& object : boxing_found) {
+    if (!discover_models_ || !untaken (object))
+      continue;
+    const FreeObjects copies = copiesOfItsOutline (
+        organized, plane, *keypoints_, object, agree, min_keypoints_, min_model_edge_);
+    if (copies.size() < 2 ||
+        std::any_of (copies.begin(), copies.end(), [&] (const FreeObject& copy) {
+          return boxHoldsObserved (
+              copy.extent, *keypoints_, seeds.observed, kBoxMargin);
+        }))
+      continue;
+    for (const FreeObject& copy : copies)
+      for (const auto k : copy.keypoints)
+        taken[static_cast<std::size_t> (k)] = true;
     addModelOfCopies (copies);
   }
   return true;

@@ -473,3 +473,27 @@ TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline
   two_sizes_search.setDiscoverModels (true);
   EXPECT_TRUE (discoverBySize (two_sizes_search, found).empty());
 }
+
+TEST (SizeInstanceSearch, CutsCopiesByTheirOutlineAroundAFoundCopy)
+{
+  // The two shifted copies above, and in the notch their footprint leaves, 1 cm from both, a
+  // found copy of another model (a smaller, lower box): the box around the two holds its
+  // keypoints,
+  // the boxes of the two parts do not.
+  const Boxes scene ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
+                      restingBox (kSoyPrint, 0.05, 0.19, 180.0),
+                      restingBox (kApplePrint, 0.085, 0.1, 90.0, {0.06, 0.03, 0.02})});
+  ASSERT_FALSE (scene.on ({2}).empty());
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  mid::ObjectModels models = {scene.modelOf ({2})};
+  std::size_t found = 0;
+  ASSERT_TRUE (search.search (models, found));
+  ASSERT_EQ (models.size(), 2u);
+  EXPECT_EQ (models[0].instances.size(), 1u);
+  EXPECT_EQ (found, 2u);
+  ASSERT_EQ (models[1].instances.size(), 2u);
+  const std::vector<int> boxes =
+      expectPosesRelativeToTheFirst (scene, models[1], 0.006f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+}
