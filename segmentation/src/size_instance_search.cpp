@@ -731,9 +731,12 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   // The model frame is the first copy's box frame (centred on the landmarks after).
   const auto addModelOfCopies = [&] (const FreeObjects& copies) {
     ObjectModel model;
-    for (const FreeObject& copy : copies)
+    for (const FreeObject& copy : copies) {
       addInstanceOfKeypoints (
           *keypoints_, *descriptors_, copy.keypoints, copy.extent.pose, model);
+      for (const auto k : copy.keypoints)
+        taken[static_cast<std::size_t> (k)] = true;
+    }
     centerModelFrame (model);
     models.push_back (model);
     found += copies.size();
@@ -772,6 +775,21 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
       used[o] = true;
     addModelOfCopies (copies);
   }
+  // Copies cut by their outline join the model of their size, as objects of it do, if they
+  // all have one; else they make a model.
+  const auto addCopies = [&] (const FreeObjects& copies) {
+    Eigen::Matrix4f box_in_model;
+    if (std::all_of (copies.begin(), copies.end(), [&] (const FreeObject& copy) {
+          return modelOfSize (
+                     copy.extent.size, models, sizes, extents, agree, box_in_model) >=
+                 0;
+        })) {
+      for (const FreeObject& copy : copies)
+        joinModelOfItsSize (copy);
+      return;
+    }
+    addModelOfCopies (copies);
+  };
   // What is left may be copies of one box touching each other, none measured alone, whose
   // footprint shows their edges.
   for (const std::size_t o : candidates) {
@@ -787,7 +805,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     if (copies.size() < 2)
       continue;
     used[o] = true;
-    addModelOfCopies (copies);
+    addCopies (copies);
   }
   // An object that is no rectangle has a box that may reach around a found copy: its parts'
   // boxes must not.
@@ -802,10 +820,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
               copy.extent, *keypoints_, seeds.observed, kBoxMargin);
         }))
       continue;
-    for (const FreeObject& copy : copies)
-      for (const auto k : copy.keypoints)
-        taken[static_cast<std::size_t> (k)] = true;
-    addModelOfCopies (copies);
+    addCopies (copies);
   }
   return true;
 }

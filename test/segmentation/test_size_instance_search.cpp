@@ -497,3 +497,25 @@ TEST (SizeInstanceSearch, CutsCopiesByTheirOutlineAroundAFoundCopy)
       expectPosesRelativeToTheFirst (scene, models[1], 0.006f);
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
 }
+
+TEST (SizeInstanceSearch, CopiesCutByTheirOutlineJoinTheModelOfTheirSize)
+{
+  // The scene above, and a third copy of the two's box standing apart, found: the two join
+  // its model, in which no other model's found copy lies.
+  const Boxes scene ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
+                      restingBox (kSoyPrint, 0.05, 0.19, 180.0),
+                      restingBox (kApplePrint, 0.085, 0.1, 90.0, {0.06, 0.03, 0.02}),
+                      restingBox (kApplePrint, -0.2, -0.12, 30.0)});
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  mid::ObjectModels models = {scene.modelOf ({2}), scene.modelOf ({3})};
+  std::size_t found = 0;
+  ASSERT_TRUE (search.search (models, found));
+  ASSERT_EQ (models.size(), 2u);
+  EXPECT_EQ (found, 2u);
+  EXPECT_EQ (models[0].instances.size(), 1u);
+  ASSERT_EQ (models[1].instances.size(), 3u);
+  const std::vector<int> boxes =
+      expectPosesRelativeToTheFirst (scene, models[1], 0.006f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 3}));
+}
