@@ -498,10 +498,10 @@ footprintRectangles (const FreeObjects& objects, const Eigen::Vector4f& plane)
   */
 constexpr float kMaxCopiesFill = 0.85f;
 
-/** Largest share of an object's outline that something in front may hide for its outline
-  * to tell its copies' edges (occludedOutlineShare()): copies hidden in part show edges that are the
-  * occluder's. Two copies cut apart on the benchmark measure 0.01 to 0.09; an L that a box in
-  * front left of two copies, 0.25.
+/** Largest share of an object's outline that something in front may hide for its outline to
+  * tell its copies' edges (occludedOutlineShare()): copies hidden in part show edges that are
+  * the occluder's. Two copies cut apart on the benchmark measure 0.01 to 0.09; an L that a box
+  * in front left of two copies, 0.25.
   */
 constexpr float kMaxOccludedShare = 0.15f;
 

@@ -272,6 +272,15 @@ twoOfOneSizeOneOfAnother ()
           restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})};
 }
 
+/** searchIn(), making models by size too. */
+mid::SizeInstanceSearch
+discoveringSearchIn (const Boxes& scene)
+{
+  mid::SizeInstanceSearch search = searchIn (scene);
+  search.setDiscoverModels (true);
+  return search;
+}
+
 /** Search with no model to start from, making models by size. */
 mid::ObjectModels
 discoverBySize (const mid::SizeInstanceSearch& search, std::size_t& found)
@@ -363,8 +372,7 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
   // Boxes 0 and 1 stand alone and agree on their size; boxes 2 and 3, of that size, touch
   // flush, and their joined top is cut into copies of it. No model to start from.
   const Boxes scene (twoApartTwoTouching());
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   std::size_t found = 0;
   const mid::ObjectModels models = discoverBySize (search, found);
   ASSERT_EQ (models.size(), 1u);
@@ -376,8 +384,7 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
 
   // The boxes standing alone of another size: the touching ones are not cut into them.
   const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
-  mid::SizeInstanceSearch other_search = searchIn (other);
-  other_search.setDiscoverModels (true);
+  mid::SizeInstanceSearch other_search = discoveringSearchIn (other);
   const mid::ObjectModels alone = discoverBySize (other_search, found);
   ASSERT_EQ (alone.size(), 1u);
   EXPECT_EQ (found, 2u);
@@ -406,8 +413,7 @@ TEST (SizeInstanceSearch, MakesNoModelOfObjectsThatDoNotStandAloneWhenAsked)
   const Boxes scene ({restingBox (kApplePrint, 0.0, 0.0, 0.0, {0.5, 0.3, kTray}),
                       on_tray (kApplePrint, -0.12, -0.04, 10.0),
                       on_tray (kSoyPrint, 0.12, 0.03, -20.0)});
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   search.setMaxSurroundedShare (0.25f);
   std::size_t found = 0;
   EXPECT_TRUE (discoverBySize (search, found).empty());
@@ -431,8 +437,7 @@ TEST (SizeInstanceSearch, TallObjectsStandAloneThoughTheirSidesShow)
   const Eigen::Vector3d tall (0.12, 0.09, 0.12);
   const Boxes scene ({restingBox (kApplePrint, -0.24, -0.15, 10.0, tall),
                       restingBox (kSoyPrint, 0.24, 0.15, -35.0, tall)});
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   std::size_t found = 0;
   const mid::ObjectModels models = discoverBySize (search, found);
   ASSERT_EQ (models.size(), 1u);
@@ -446,8 +451,7 @@ TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline
   // start from.
   const Boxes scene ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
                       restingBox (kSoyPrint, 0.05, 0.19, 180.0)});
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   std::size_t found = 0;
   const mid::ObjectModels models = discoverBySize (search, found);
   ASSERT_EQ (models.size(), 1u);
@@ -460,8 +464,7 @@ TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline
   // Not shifted, their footprint is a rectangle that one box could make: left whole.
   const Boxes flush ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
                       restingBox (kSoyPrint, 0.0, 0.19, 180.0)});
-  mid::SizeInstanceSearch flush_search = searchIn (flush);
-  flush_search.setDiscoverModels (true);
+  mid::SizeInstanceSearch flush_search = discoveringSearchIn (flush);
   EXPECT_TRUE (discoverBySize (flush_search, found).empty());
   EXPECT_EQ (found, 0u);
 
@@ -469,8 +472,7 @@ TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline
   const Boxes two_sizes (
       {restingBox (kApplePrint, 0.0, 0.1, 0.0),
        restingBox (kSoyPrint, 0.05, 0.2, 180.0, {0.12, 0.11, 0.04})});
-  mid::SizeInstanceSearch two_sizes_search = searchIn (two_sizes);
-  two_sizes_search.setDiscoverModels (true);
+  mid::SizeInstanceSearch two_sizes_search = discoveringSearchIn (two_sizes);
   EXPECT_TRUE (discoverBySize (two_sizes_search, found).empty());
 }
 
@@ -484,8 +486,7 @@ TEST (SizeInstanceSearch, CutsCopiesByTheirOutlineAroundAFoundCopy)
                       restingBox (kSoyPrint, 0.05, 0.19, 180.0),
                       restingBox (kApplePrint, 0.085, 0.1, 90.0, {0.06, 0.03, 0.02})});
   ASSERT_FALSE (scene.on ({2}).empty());
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   mid::ObjectModels models = {scene.modelOf ({2})};
   std::size_t found = 0;
   ASSERT_TRUE (search.search (models, found));
@@ -506,8 +507,7 @@ TEST (SizeInstanceSearch, CopiesCutByTheirOutlineJoinTheModelOfTheirSize)
                       restingBox (kSoyPrint, 0.05, 0.19, 180.0),
                       restingBox (kApplePrint, 0.085, 0.1, 90.0, {0.06, 0.03, 0.02}),
                       restingBox (kApplePrint, -0.2, -0.12, 30.0)});
-  mid::SizeInstanceSearch search = searchIn (scene);
-  search.setDiscoverModels (true);
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
   mid::ObjectModels models = {scene.modelOf ({2}), scene.modelOf ({3})};
   std::size_t found = 0;
   ASSERT_TRUE (search.search (models, found));
