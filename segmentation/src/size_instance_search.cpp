@@ -506,7 +506,7 @@ constexpr float kMaxCopiesFill = 0.85f;
 constexpr float kMaxOccludedShare = 0.15f;
 
 /** Shortest edge of copies cut by their outline (metres), whatever the models' shortest edge:
-  * a raster of 2 mm cells measures it to a tenth.
+  * the raster's cells (a tenth of the edge, 4 mm at most) measure 2 cm to a tenth.
   */
 constexpr float kMinOutlineEdge = 0.02f;
 

@@ -170,7 +170,8 @@ public:
     * order, and gains the instances found (after its own) and their keypoints as landmarks,
     * in its own frame (not centred again: centerModelFrame()); the new models
     * (setDiscoverModels()), centred on their landmarks, come after them. An object whose box
-    * holds a keypoint of an instance is no copy. Without a support plane, or
+    * holds a keypoint of an instance is no copy (cut by its outline, its parts may be, if
+    * their boxes hold none). Without a support plane, or
     * without a model of a measured size and without setDiscoverModels(), nothing changes.
     * \param[out] found how many instances were added, to old models and in new ones
     * \return false (with a PCL_ERROR, models unchanged, found 0) on missing or inconsistent
