@@ -58,26 +58,19 @@ footprintCopySizes (
   sizes.clear();
   if (!(cell > 0.0f) || !std::isfinite (cell) || !(min_edge > 0.0f) ||
       !std::isfinite (min_edge) || !(max_fill > 0.0f && max_fill <= 1.0f)) {
-    PCL_ERROR ("[mid::footprintCopySizes] The cell and the shortest edge must be "
-               "finite and > 0, "
-               "the fill in (0, 1].\n");
-    return false;
-  }
-  if (std::any_of (points.begin(), points.end(), [] (const Eigen::Vector2f& point) {
-        return !point.allFinite();
-      })) {
-    PCL_ERROR ("[mid::footprintCopySizes] A point of the footprint is not finite.\n");
-    return false;
-  }
-  if (points.empty())
-    return true;
-  detail::Raster raster;
-  if (!detail::rasterizeFootprint (points, cell, raster)) {
     PCL_ERROR (
-        "[mid::footprintCopySizes] The footprint spans more than %.0f cells of %g m.\n",
-        detail::kMaxRasterCells,
-        static_cast<double> (cell));
+        "[mid::footprintCopySizes] The cell and the shortest edge must be finite "
+        "and > 0, the fill in (0, 1].\n");
     return false;
+  }
+  detail::Raster raster;
+  switch (detail::rasterizeFootprint (points, cell, "footprintCopySizes", raster)) {
+  case detail::RasterOutcome::refused:
+    return false;
+  case detail::RasterOutcome::empty:
+    return true;
+  case detail::RasterOutcome::rasterized:
+    break;
   }
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours (

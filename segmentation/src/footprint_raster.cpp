@@ -1,20 +1,31 @@
 #include "footprint_raster.h"
 
 #include <opencv2/imgproc.hpp>
+#include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 namespace mid {
 namespace detail {
 
-bool
+RasterOutcome
 rasterizeFootprint (
     const std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>>&
         points,
     float cell,
+    const char* function,
     Raster& raster)
 {
+  if (std::any_of (points.begin(), points.end(), [] (const Eigen::Vector2f& point) {
+        return !point.allFinite();
+      })) {
+    PCL_ERROR ("[mid::%s] A point of the footprint is not finite.\n", function);
+    return RasterOutcome::refused;
+  }
+  if (points.empty())
+    return RasterOutcome::empty;
   Eigen::Vector2f low = points.front(), high = points.front();
   for (const auto& point : points) {
     low = low.cwiseMin (point);
@@ -23,8 +34,13 @@ rasterizeFootprint (
   const Eigen::Vector2f extent = (high - low) / cell;
   if (!extent.allFinite() || (static_cast<double> (extent.x()) + 3.0) *
                                      (static_cast<double> (extent.y()) + 3.0) >
-                                 kMaxRasterCells)
-    return false;
+                                 kMaxRasterCells) {
+    PCL_ERROR ("[mid::%s] The footprint spans more than %.0f cells of %g m.\n",
+               function,
+               kMaxRasterCells,
+               static_cast<double> (cell));
+    return RasterOutcome::refused;
+  }
   raster.cell = cell;
   raster.origin = low - Eigen::Vector2f::Constant (cell);
   raster.occupied = cv::Mat::zeros (
@@ -38,7 +54,7 @@ rasterizeFootprint (
                     raster.occupied,
                     cv::MORPH_CLOSE,
                     cv::getStructuringElement (cv::MORPH_RECT, cv::Size (3, 3)));
-  return true;
+  return RasterOutcome::rasterized;
 }
 
 } // namespace detail

@@ -29,15 +29,24 @@ struct Raster
   }
 };
 
-/** \brief Rasterize finite `points` (at least one) into cells of `cell`, with a free cell
-  * around them, the gaps between the points' cells closed (3 x 3).
-  * \return false (raster untouched) if that takes more than kMaxRasterCells cells
+/** \brief What rasterizeFootprint() made of the points. */
+enum class RasterOutcome {
+  empty,      ///< no point: nothing to rasterize
+  rasterized, ///< the raster holds the points
+  refused     ///< a point not finite, or too many cells (PCL_ERROR printed)
+};
+
+/** \brief Rasterize `points` into cells of `cell` (> 0), with a free cell around them, the
+  * gaps between the points' cells closed (3 x 3). A point that is not finite, or a raster of
+  * more than kMaxRasterCells cells, is refused with a PCL_ERROR that names `function` (the
+  * caller, e.g. "splitFootprint"); the raster is then untouched.
   */
-bool
+RasterOutcome
 rasterizeFootprint (
     const std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>>&
         points,
     float cell,
+    const char* function,
     Raster& raster);
 
 } // namespace detail

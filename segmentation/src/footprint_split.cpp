@@ -34,9 +34,9 @@ FootprintRectangle::distance (const Eigen::Vector2f& point) const
 
 namespace {
 
-using detail::kMaxRasterCells;
 using detail::Raster;
 using detail::rasterizeFootprint;
+using detail::RasterOutcome;
 
 /** A footprint of fewer rectangles' area than this is one copy, not a group. */
 constexpr double kMinCopies = 1.6;
@@ -221,21 +221,14 @@ splitFootprint (const std::vector<Eigen::Vector2f,
         static_cast<double> (size.minCoeff()));
     return false;
   }
-  if (std::any_of (points.begin(), points.end(), [] (const Eigen::Vector2f& point) {
-        return !point.allFinite();
-      })) {
-    PCL_ERROR ("[mid::splitFootprint] A point of the footprint is not finite.\n");
-    return false;
-  }
-  if (points.empty())
-    return true;
   Raster raster;
-  if (!rasterizeFootprint (points, cell, raster)) {
-    PCL_ERROR (
-        "[mid::splitFootprint] The footprint spans more than %.0f cells of %g m.\n",
-        kMaxRasterCells,
-        static_cast<double> (cell));
+  switch (rasterizeFootprint (points, cell, "splitFootprint", raster)) {
+  case RasterOutcome::refused:
     return false;
+  case RasterOutcome::empty:
+    return true;
+  case RasterOutcome::rasterized:
+    break;
   }
   const double total = cv::countNonZero (raster.occupied);
   // A copy alone covers its rectangle's cells and the border the raster adds around it.
