@@ -1,4 +1,5 @@
 #include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/round_side.h>
 
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
@@ -112,6 +113,34 @@ quantile (std::vector<float>& values, float q)
                                        q * static_cast<float> (values.size() - 1));
   std::nth_element (values.begin(), at, values.end());
   return *at;
+}
+
+/** Share of an object's length at either end whose points are left out of its cross-section:
+  * the flat ends of a can lying down are none of it.
+  */
+constexpr float kSectionEndShare = 0.1f;
+
+/** widenToRoundSide() across the shorter of the footprint's two edges (extents [low, high]
+  * along its two directions), on the points of the middle of the longer: `along` holds the
+  * points' positions along both directions, `heights` their heights above the plane.
+  */
+void
+widenShorterEdgeToRoundSide (const std::array<std::vector<float>, 2>& along,
+                             const std::vector<float>& heights,
+                             float height,
+                             std::array<float, 2>& low,
+                             std::array<float, 2>& high)
+{
+  const std::size_t across = high[0] - low[0] < high[1] - low[1] ? 0 : 1;
+  const std::size_t length = 1 - across;
+  const float end = kSectionEndShare * (high[length] - low[length]);
+  std::vector<float> positions, section_heights;
+  for (std::size_t i = 0; i < heights.size(); ++i)
+    if (along[length][i] > low[length] + end && along[length][i] < high[length] - end) {
+      positions.push_back (along[across][i]);
+      section_heights.push_back (heights[i]);
+    }
+  widenToRoundSide (positions, section_heights, height, low[across], high[across]);
 }
 
 } // namespace
@@ -324,6 +353,7 @@ fitInstanceBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
     heights.push_back (planeDistance (plane, p));
   }
   const cv::RotatedRect rectangle = cv::minAreaRect (footprint);
+  const std::vector<float> point_heights = heights;
   const float box_height = quantile (heights, kEdgeQuantile);
 
   // The rectangle gives the footprint's directions; its extents along them are quantiles,
@@ -338,10 +368,13 @@ fitInstanceBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
     along_u.push_back (u.x() * f.x + u.y() * f.y);
     along_v.push_back (v.x() * f.x + v.y() * f.y);
   }
-  const std::array<float, 2> low = {quantile (along_u, 1.0f - kEdgeQuantile),
-                                    quantile (along_v, 1.0f - kEdgeQuantile)};
-  const std::array<float, 2> high = {quantile (along_u, kEdgeQuantile),
-                                     quantile (along_v, kEdgeQuantile)};
+  const std::array<std::vector<float>, 2> along = {along_u, along_v};
+  std::array<float, 2> low = {quantile (along_u, 1.0f - kEdgeQuantile),
+                              quantile (along_v, 1.0f - kEdgeQuantile)};
+  std::array<float, 2> high = {quantile (along_u, kEdgeQuantile),
+                               quantile (along_v, kEdgeQuantile)};
+  // A can lying down shows the camera half its round side.
+  widenShorterEdgeToRoundSide (along, point_heights, box_height, low, high);
   const Eigen::Vector2f centre =
       0.5f * (low[0] + high[0]) * u + 0.5f * (low[1] + high[1]) * v;
 

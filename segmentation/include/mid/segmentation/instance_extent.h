@@ -86,7 +86,10 @@ growInstanceSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
   * The box stands on the plane: its footprint is the rectangle holding the surface's points
   * projected onto the plane (directions from the smallest such rectangle, extents from the
   * 0.5 % and 99.5 % quantiles along them, so that a few noisy points do not widen it), its
-  * height the 99.5 % quantile of the points' heights above the plane.
+  * height the 99.5 % quantile of the points' heights above the plane. An object lying with a
+  * round side up (a can lying down) shows the camera only half of it: its shorter footprint
+  * edge is widened to the diameter of the circle its cross-section (the points of the middle
+  * 80 % of its length) lies on (widenToRoundSide()), as a copy standing up measures it.
   *
   * \param[in] organized the frame (camera frame, metres)
   * \param[in] plane the support plane (fitSupportPlane())
