@@ -1,5 +1,6 @@
 #include "disjoint_sets.h"
 
+#include <mid/segmentation/flat_top_parts.h>
 #include <mid/segmentation/footprint_copy_sizes.h>
 #include <mid/segmentation/footprint_split.h>
 #include <mid/segmentation/instance_extent.h>
@@ -562,6 +563,44 @@ copiesOfItsOutline (const pcl::PointCloud<pcl::PointXYZ>& organized,
   return {};
 }
 
+/** The copy of a box of `size` that `object` holds, joined with something else, found by its
+  * flat top (flatTopParts()) and measured on its own: the first part with at least
+  * `min_keypoints` of the object's keypoints (those whose pixel it holds), not all of them,
+  * whose box has that size. None otherwise.
+  */
+FreeObjects
+copyByItsFlatTop (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                  const Eigen::Vector4f& plane,
+                  const pcl::Indices& keypoint_pixels,
+                  const FreeObject& object,
+                  const Eigen::Vector3f& size,
+                  const SizeAgreement& agree,
+                  int min_keypoints)
+{
+  std::vector<pcl::Indices> parts;
+  if (!flatTopParts (organized, plane, object.pixels, size, parts))
+    return {};
+  std::vector<std::uint8_t> in_part (organized.size(), 0);
+  for (const pcl::Indices& pixels : parts) {
+    FreeObject copy;
+    copy.pixels = pixels;
+    for (const auto p : pixels)
+      in_part[static_cast<std::size_t> (p)] = 1;
+    for (const auto k : object.keypoints)
+      if (in_part[static_cast<std::size_t> (
+              keypoint_pixels[static_cast<std::size_t> (k)])] != 0)
+        copy.keypoints.push_back (k);
+    for (const auto p : pixels)
+      in_part[static_cast<std::size_t> (p)] = 0;
+    if (copy.keypoints.size() >= static_cast<std::size_t> (min_keypoints) &&
+        copy.keypoints.size() < object.keypoints.size() &&
+        fitInstanceBox (organized, plane, copy.pixels, copy.extent) &&
+        agree (copy.extent.size, size))
+      return {copy};
+  }
+  return {};
+}
+
 /** Group the objects whose sizes agree with the first of the group (most keypoints first);
   * an object no other agrees with is a group of its own.
   */
@@ -696,7 +735,18 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     ++found;
     return m;
   };
-  // An object of no model's size may be copies of one touching each other flush.
+  const auto copyOfItsFlatTop = [&] (const FreeObject& object,
+                                     const Eigen::Vector3f& size) {
+    return copyByItsFlatTop (organized,
+                             plane,
+                             surface_.keypoint_pixels,
+                             object,
+                             size,
+                             agree,
+                             min_keypoints_);
+  };
+  // An object of no model's size may be copies of one touching each other flush, or hold one
+  // joined with something else.
   const auto joinModelOrCutIntoCopies = [&] (const FreeObject& object) {
     int m = joinModelOfItsSize (object);
     for (std::size_t other = 0; m < 0 && other < sizes.size(); ++other) {
@@ -706,6 +756,9 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
                organized, plane, *keypoints_, object, sizes[other].size, agree))
         if (part.keypoints.size() >= static_cast<std::size_t> (min_keypoints_))
           m = std::max (m, joinModelOfItsSize (part));
+      if (m < 0)
+        for (const FreeObject& copy : copyOfItsFlatTop (object, sizes[other].size))
+          m = joinModelOfItsSize (copy);
     }
     return m;
   };
@@ -752,19 +805,25 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
         copies.push_back (free_objects[o]);
         sources.push_back (o);
       }
-    if (copies.size() < 2)
+    if (copies.empty())
       continue;
+    // A size seen once cuts no group of copies (a box may be two of another), but it finds a
+    // copy whose own top shows in a join with something else.
+    const bool seen_once = copies.size() < 2;
     const Eigen::Vector3f size = copies.front().extent.size;
     for (const std::size_t o : candidates) {
       if (used[o] || std::find (group.begin(), group.end(), o) != group.end())
         continue;
       FreeObjects parts;
-      for (const FreeObject& part :
-           flushCopies (organized, plane, *keypoints_, free_objects[o], size, agree))
-        if (part.keypoints.size() >= static_cast<std::size_t> (min_keypoints_) &&
-            agree (part.extent.size, size))
-          parts.push_back (part);
+      if (!seen_once)
+        for (const FreeObject& part :
+             flushCopies (organized, plane, *keypoints_, free_objects[o], size, agree))
+          if (part.keypoints.size() >= static_cast<std::size_t> (min_keypoints_) &&
+              agree (part.extent.size, size))
+            parts.push_back (part);
       if (parts.size() < 2)
+        parts = copyOfItsFlatTop (free_objects[o], size);
+      if (parts.empty())
         continue;
       sources.push_back (o);
       copies.insert (copies.end(), parts.begin(), parts.end());

@@ -200,12 +200,10 @@ measureLyingObject (const mid::simulation::Shape::Ptr& shape,
   const Eigen::Vector3f n = normal.cast<float>();
   const Eigen::Vector4f plane (
       n.x(), n.y(), n.z(), -n.dot (table_pose.translation().cast<float>()));
-  pcl::PointCloud<pcl::PointXYZ> organized;
-  organized.width = cloud.width;
-  organized.height = cloud.height;
+  pcl::PointCloud<pcl::PointXYZ> organized (cloud.width, cloud.height);
   pcl::Indices surface;
   for (std::size_t p = 0; p < cloud.size(); ++p) {
-    organized.push_back (pcl::PointXYZ (cloud[p].x, cloud[p].y, cloud[p].z));
+    organized[p] = pcl::PointXYZ (cloud[p].x, cloud[p].y, cloud[p].z);
     if (std::isfinite (cloud[p].z) &&
         mid::planeDistance (plane, cloud[p].getVector3fMap()) > 0.002f)
       surface.push_back (static_cast<pcl::index_t> (p));

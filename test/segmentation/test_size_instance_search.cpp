@@ -519,3 +519,39 @@ TEST (SizeInstanceSearch, CopiesCutByTheirOutlineJoinTheModelOfTheirSize)
       expectPosesRelativeToTheFirst (scene, models[1], 0.006f);
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 3}));
 }
+
+TEST (SizeInstanceSearch, FindsASecondCopyJoinedWithAnotherBoxByItsFlatTop)
+{
+  // A box standing alone, and a copy of it (another print) flush beside a box of another
+  // size, 7 mm taller: the copy and that box grow into one object. Seen once, the first box's
+  // size cuts no group of copies, but the copy's top shows at its height in the join.
+  const Eigen::Vector3d taller (0.12, 0.07, 0.047);
+  const Boxes scene ({restingBox (kApplePrint, -0.15, -0.1, 10.0),
+                      restingBox (kSoyPrint, 0.1, 0.0, 0.0),
+                      restingBox (kApplePrint, 0.1, 0.08, 0.0, taller)});
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
+  std::size_t found = 0;
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, 2u);
+  ASSERT_EQ (models[0].instances.size(), 2u);
+  const std::vector<int> boxes =
+      expectPosesRelativeToTheFirst (scene, models[0], 0.006f);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+
+  // With the first box found already, the copy joins its model.
+  mid::ObjectModels found_first = {scene.modelOf ({0})};
+  ASSERT_TRUE (search.search (found_first, found));
+  ASSERT_EQ (found_first.size(), 1u);
+  EXPECT_EQ (found, 1u);
+  ASSERT_EQ (found_first[0].instances.size(), 2u);
+  EXPECT_EQ (mostlyOnBox (scene, found_first[0].instances[1].keypoints), 1);
+
+  // Beside a box of its own height, the copy's top runs into the other's: no part, no model.
+  const Boxes level ({restingBox (kApplePrint, -0.15, -0.1, 10.0),
+                      restingBox (kSoyPrint, 0.1, 0.0, 0.0),
+                      restingBox (kApplePrint, 0.1, 0.08, 0.0, {0.12, 0.07, 0.04})});
+  mid::SizeInstanceSearch level_search = discoveringSearchIn (level);
+  EXPECT_TRUE (discoverBySize (level_search, found).empty());
+  EXPECT_EQ (found, 0u);
+}
