@@ -343,6 +343,25 @@ expectPosesRelativeToTheFirst (const Boxes& scene,
   return boxes;
 }
 
+/** With no model to start from, `search` makes one model of exactly the boxes `expected` of
+  * `scene`, posed relative to the first as the boxes are (expectPosesRelativeToTheFirst()).
+  */
+void
+expectOneModelOfBoxes (const Boxes& scene,
+                       const mid::SizeInstanceSearch& search,
+                       const std::set<int>& expected,
+                       float tolerance = 0.006f)
+{
+  std::size_t found = 0;
+  const mid::ObjectModels models = discoverBySize (search, found);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (found, expected.size());
+  ASSERT_EQ (models[0].instances.size(), expected.size());
+  const std::vector<int> boxes =
+      expectPosesRelativeToTheFirst (scene, models[0], tolerance);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), expected);
+}
+
 } // namespace
 
 TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
@@ -354,13 +373,7 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
   EXPECT_EQ (found, 0u);
 
   search.setDiscoverModels (true);
-  const mid::ObjectModels models = discoverBySize (search, found);
-  ASSERT_EQ (models.size(), 1u);
-  EXPECT_EQ (found, 2u);
-  const mid::ObjectModel& model = models[0];
-  ASSERT_EQ (model.instances.size(), 2u);
-  const std::vector<int> boxes = expectPosesRelativeToTheFirst (scene, model, 0.005f);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+  expectOneModelOfBoxes (scene, search, {0, 1}, 0.005f);
 
   // Objects whose shortest edge (0.04 here) is below the smallest a model may have.
   search.setMinModelEdge (0.05f);
@@ -372,15 +385,8 @@ TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
   // Boxes 0 and 1 stand alone and agree on their size; boxes 2 and 3, of that size, touch
   // flush, and their joined top is cut into copies of it. No model to start from.
   const Boxes scene (twoApartTwoTouching());
-  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
+  expectOneModelOfBoxes (scene, discoveringSearchIn (scene), {0, 1, 2, 3});
   std::size_t found = 0;
-  const mid::ObjectModels models = discoverBySize (search, found);
-  ASSERT_EQ (models.size(), 1u);
-  EXPECT_EQ (found, 4u);
-  const mid::ObjectModel& model = models[0];
-  ASSERT_EQ (model.instances.size(), 4u);
-  const std::vector<int> boxes = expectPosesRelativeToTheFirst (scene, model, 0.006f);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
 
   // The boxes standing alone of another size: the touching ones are not cut into them.
   const Boxes other (twoApartTwoTouching ({0.1, 0.1, 0.04}));
@@ -451,15 +457,8 @@ TEST (SizeInstanceSearch, CutsCopiesOfAnUnknownSizeTouchingShiftedByTheirOutline
   // start from.
   const Boxes scene ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
                       restingBox (kSoyPrint, 0.05, 0.19, 180.0)});
-  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
+  expectOneModelOfBoxes (scene, discoveringSearchIn (scene), {0, 1});
   std::size_t found = 0;
-  const mid::ObjectModels models = discoverBySize (search, found);
-  ASSERT_EQ (models.size(), 1u);
-  EXPECT_EQ (found, 2u);
-  ASSERT_EQ (models[0].instances.size(), 2u);
-  const std::vector<int> boxes =
-      expectPosesRelativeToTheFirst (scene, models[0], 0.006f);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
 
   // Not shifted, their footprint is a rectangle that one box could make: left whole.
   const Boxes flush ({restingBox (kApplePrint, 0.0, 0.1, 0.0),
@@ -529,17 +528,11 @@ TEST (SizeInstanceSearch, FindsASecondCopyJoinedWithAnotherBoxByItsFlatTop)
   const Boxes scene ({restingBox (kApplePrint, -0.15, -0.1, 10.0),
                       restingBox (kSoyPrint, 0.1, 0.0, 0.0),
                       restingBox (kApplePrint, 0.1, 0.08, 0.0, taller)});
-  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
-  std::size_t found = 0;
-  const mid::ObjectModels models = discoverBySize (search, found);
-  ASSERT_EQ (models.size(), 1u);
-  EXPECT_EQ (found, 2u);
-  ASSERT_EQ (models[0].instances.size(), 2u);
-  const std::vector<int> boxes =
-      expectPosesRelativeToTheFirst (scene, models[0], 0.006f);
-  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1}));
+  const mid::SizeInstanceSearch search = discoveringSearchIn (scene);
+  expectOneModelOfBoxes (scene, search, {0, 1});
 
   // With the first box found already, the copy joins its model.
+  std::size_t found = 0;
   mid::ObjectModels found_first = {scene.modelOf ({0})};
   ASSERT_TRUE (search.search (found_first, found));
   ASSERT_EQ (found_first.size(), 1u);
