@@ -41,7 +41,10 @@ namespace mid {
   *    their descriptors. An object of no model's size whose height is an edge of a model's
   *    box may be copies of it touching each other flush: splitFootprint() cuts its footprint
   *    into the box's rectangles, and each part, measured on its own outline (the points
-  *    nearest its rectangle), joins the model when it has its size;
+  *    nearest its rectangle), joins the model when it has its size. When no such cut does,
+  *    a copy joined with a box of another height may show its flat top at one of the box's
+  *    edges (flatTopParts()): the part under that top, measured on its own, joins the model
+  *    when it has its size;
   * 4. with setDiscoverModels(), groups the objects (as they lie) of no model's size, sharing
   *    no keypoint with an instance, whose shortest edge is at least `min_model_edge` and,
   *    when asked (setMaxSurroundedShare() below 1), that stand alone on the plane (at most
@@ -54,7 +57,10 @@ namespace mid {
   *    model's size (standing alone or not) that are two or more of its copies touching each
   *    other flush, largest groups first. The size of an object seen once cuts nothing: a
   *    box of another size that two of its footprints tile (a cookie box, two juice cartons
-  *    lying flush) is too common. What is left may be two or three copies of one box, none
+  *    lying flush) is too common. But a group, even of one object, takes a copy of its size
+  *    that an object of no model's size holds, joined with a box of another height, whose
+  *    flat top shows at the copy's height (flatTopParts(); the part under it, measured on
+  *    its own, has the size; the rest of that object is not looked at again). What is left may be two or three copies of one box, none
   *    seen alone, touching each other with their tops at one height: when the object's
   *    footprint is no rectangle (no one box could have made it) and nothing in front hides
   *    much of its outline (occludedOutlineShare()), the edges of its outline between right
@@ -63,7 +69,8 @@ namespace mid {
   *    (rectanglesFill()), makes a model of them.
   *
   * An object touching another is measured with it and agrees with no model's size, unless
-  * the other is a found copy of a measured model or both are copies of one touching flush;
+  * the other is a found copy of a measured model, both are copies of one touching flush, or
+  * the object shows its flat top beside a box of another height;
   * an object occluded in part is measured too small: both are left alone. A product of
   * another type that has the same size within the tolerance is taken for a copy, and so are
   * touching boxes of another size whose footprint the model's rectangles tile and whose
