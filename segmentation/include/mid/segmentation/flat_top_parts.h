@@ -19,15 +19,14 @@ namespace mid {
   * whose points lie within 6 mm of that height and are level (the normal through the points 4
   * pixels away on either side within 25 deg of the plane's), and keeps those whose smallest
   * rectangle on the plane is at most 6 mm longer than the box's other two edges, and at most
-  * 20 mm shorter (the top's rim, where the normal bends towards the sides, is not level;
-  * nor is the part of it a neighbour hides). The part
-  * is the pixels of `surface` over that
+  * 20 mm shorter (the top's rim, where the normal bends towards the sides, is not level; nor
+  * is the part of it a neighbour hides). The part is the pixels of `surface` over that
   * rectangle grown by 8 mm, no higher than the top (plus 6 mm), and not within 4 pixels of a
   * level pixel of their own height unless that is the top's: the box's sides under its top,
-  * not a lower neighbour's top or its rim. A neighbour of the same height joins the patch and makes it too long: a join of
-  * copies of one box lying flush is no part (SizeInstanceSearch cuts those by their outline
-  * or by a size seen twice). The caller measures each part (fitInstanceBox()) to tell whether
-  * it is a copy.
+  * not a lower neighbour's top or its rim. A neighbour of the same height joins the patch and
+  * makes it too long: a join of copies of one box lying flush is no part (SizeInstanceSearch
+  * cuts those by their outline or by a size seen twice). The caller measures each part
+  * (fitInstanceBox()) to tell whether it is a copy.
   *
   * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)
   * \param[in] plane the support plane (fitSupportPlane())
