@@ -1,4 +1,5 @@
 #include <mid/segmentation/flat_top_parts.h>
+#include <mid/segmentation/footprint_split.h>
 #include <mid/segmentation/instance_extent.h>
 
 #include <opencv2/imgproc.hpp>
@@ -33,30 +34,17 @@ constexpr float kPartReach = 0.008f;
 /** Edges closer than this (metres) are one: a square box's top is looked for once. */
 constexpr float kSameEdge = 0.001f;
 
-/** A rectangle on the plane, in 2D coordinates (cv::minAreaRect()). */
-struct TopRectangle
+/** The rectangle cv::minAreaRect() gives, in the plane's 2D coordinates. */
+FootprintRectangle
+rectangleOf (const cv::RotatedRect& rectangle)
 {
-  Eigen::Vector2f centre, along, across;
-  float half_along = 0.0f, half_across = 0.0f;
-
-  explicit TopRectangle (const cv::RotatedRect& rectangle)
-  : centre (rectangle.center.x, rectangle.center.y)
-  {
-    const float angle = rectangle.angle * static_cast<float> (M_PI) / 180.0f;
-    along = Eigen::Vector2f (std::cos (angle), std::sin (angle));
-    across = Eigen::Vector2f (-along.y(), along.x());
-    half_along = 0.5f * rectangle.size.width;
-    half_across = 0.5f * rectangle.size.height;
-  }
-
-  bool
-  holds (const Eigen::Vector2f& point, float margin) const
-  {
-    const Eigen::Vector2f offset = point - centre;
-    return std::abs (offset.dot (along)) <= half_along + margin &&
-           std::abs (offset.dot (across)) <= half_across + margin;
-  }
-};
+  const float angle = rectangle.angle * static_cast<float> (M_PI) / 180.0f;
+  FootprintRectangle footprint;
+  footprint.centre = Eigen::Vector2f (rectangle.center.x, rectangle.center.y);
+  footprint.direction = Eigen::Vector2f (std::cos (angle), std::sin (angle));
+  footprint.size = Eigen::Vector2f (rectangle.size.width, rectangle.size.height);
+  return footprint;
+}
 
 } // namespace
 
@@ -178,7 +166,7 @@ flatTopParts (const pcl::PointCloud<pcl::PointXYZ>& organized,
       if (shorter > short_edge + kTopExcess || shorter < short_edge - kTopShortfall ||
           longer > long_edge + kTopExcess || longer < long_edge - kTopShortfall)
         continue;
-      const TopRectangle under (rectangle);
+      const FootprintRectangle under = rectangleOf (rectangle);
       pcl::Indices part;
       for (const auto p : surface) {
         const float above = planeDistance (plane, point (p));
