@@ -563,23 +563,22 @@ copiesOfItsOutline (const pcl::PointCloud<pcl::PointXYZ>& organized,
   return {};
 }
 
-/** The copy of a box of `size` that `object` holds, joined with something else, found by its
-  * flat top (flatTopParts()) and measured on its own: the first part with at least
-  * `min_keypoints` of the object's keypoints (those whose pixel it holds), not all of them,
-  * whose box has that size. None otherwise.
+/** The parts of `object` under the flat tops of a box of `size` (flatTopParts()), each with
+  * the object's keypoints whose pixel it holds and measured on its own (fitInstanceBox()):
+  * those with at least `min_keypoints` of them, not all.
   */
 FreeObjects
-copyByItsFlatTop (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                  const Eigen::Vector4f& plane,
-                  const pcl::Indices& keypoint_pixels,
-                  const FreeObject& object,
-                  const Eigen::Vector3f& size,
-                  const SizeAgreement& agree,
-                  int min_keypoints)
+flatTopCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
+               const Eigen::Vector4f& plane,
+               const pcl::Indices& keypoint_pixels,
+               const FreeObject& object,
+               const Eigen::Vector3f& size,
+               int min_keypoints)
 {
   std::vector<pcl::Indices> parts;
   if (!flatTopParts (organized, plane, object.pixels, size, parts))
     return {};
+  FreeObjects copies;
   std::vector<std::uint8_t> in_part (organized.size(), 0);
   for (const pcl::Indices& pixels : parts) {
     FreeObject copy;
@@ -594,9 +593,88 @@ copyByItsFlatTop (const pcl::PointCloud<pcl::PointXYZ>& organized,
       in_part[static_cast<std::size_t> (p)] = 0;
     if (copy.keypoints.size() >= static_cast<std::size_t> (min_keypoints) &&
         copy.keypoints.size() < object.keypoints.size() &&
-        fitInstanceBox (organized, plane, copy.pixels, copy.extent) &&
-        agree (copy.extent.size, size))
+        fitInstanceBox (organized, plane, copy.pixels, copy.extent))
+      copies.push_back (copy);
+  }
+  return copies;
+}
+
+/** The copy of a box of `size` that `object` holds, joined with something else, found by its
+  * flat top (flatTopCopies()): the first part whose box has that size. None otherwise.
+  */
+FreeObjects
+copyByItsFlatTop (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                  const Eigen::Vector4f& plane,
+                  const pcl::Indices& keypoint_pixels,
+                  const FreeObject& object,
+                  const Eigen::Vector3f& size,
+                  const SizeAgreement& agree,
+                  int min_keypoints)
+{
+  for (const FreeObject& copy :
+       flatTopCopies (organized, plane, keypoint_pixels, object, size, min_keypoints))
+    if (agree (copy.extent.size, size))
       return {copy};
+  return {};
+}
+
+/** Two or more copies of one box of unknown size that `object`, of no model's size, holds,
+  * joined with each other (one standing, one lying, or at right angles) and none seen alone:
+  * for each box that a flat top of the object suggests (flatTopSizes()), no edge shorter
+  * than `min_edge`, its parts (flatTopCopies(); a part holding no keypoint that an earlier one
+  * does not is the same top again) with no edge shorter than `min_edge` that agree in size
+  * with the first of them and, at twice the tolerances (the suggestion is a rectangle of
+  * level pixels), with the suggestion. A keypoint two parts hold (where the copies touch) is
+  * neither's; the first suggestion that leaves two parts of `min_keypoints` gives the copies.
+  * None otherwise.
+  */
+FreeObjects
+copiesOfItsFlatTops (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                     const Eigen::Vector4f& plane,
+                     const pcl::Indices& keypoint_pixels,
+                     const FreeObject& object,
+                     const SizeAgreement& agree,
+                     int min_keypoints,
+                     float min_edge)
+{
+  std::vector<Eigen::Vector3f> suggestions;
+  if (!flatTopSizes (organized, plane, object.pixels, suggestions))
+    return {};
+  const SizeAgreement loose = agree.scaled (2.0f);
+  std::vector<int> holders (keypoint_pixels.size(), 0);
+  for (const Eigen::Vector3f& suggestion : suggestions) {
+    if (suggestion.minCoeff() < min_edge)
+      continue;
+    FreeObjects copies;
+    for (FreeObject& part : flatTopCopies (
+             organized, plane, keypoint_pixels, object, suggestion, min_keypoints)) {
+      if (part.extent.size.minCoeff() < min_edge ||
+          !loose (part.extent.size, suggestion) ||
+          (!copies.empty() && !agree (part.extent.size, copies.front().extent.size)) ||
+          std::all_of (
+              part.keypoints.begin(), part.keypoints.end(), [&] (pcl::index_t k) {
+                return holders[static_cast<std::size_t> (k)] > 0;
+              }))
+        continue;
+      for (const auto k : part.keypoints)
+        ++holders[static_cast<std::size_t> (k)];
+      copies.push_back (std::move (part));
+    }
+    std::vector<pcl::Indices> own (copies.size());
+    for (std::size_t c = 0; c < copies.size(); ++c)
+      for (const auto k : copies[c].keypoints)
+        if (holders[static_cast<std::size_t> (k)] == 1)
+          own[c].push_back (k);
+    FreeObjects kept;
+    for (std::size_t c = 0; c < copies.size(); ++c) {
+      for (const auto k : copies[c].keypoints)
+        holders[static_cast<std::size_t> (k)] = 0;
+      copies[c].keypoints = own[c];
+      if (own[c].size() >= static_cast<std::size_t> (min_keypoints))
+        kept.push_back (std::move (copies[c]));
+    }
+    if (kept.size() >= 2)
+      return kept;
   }
   return {};
 }
@@ -854,13 +932,21 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
   for (const std::size_t o : candidates) {
     if (used[o])
       continue;
-    const FreeObjects copies = copiesOfItsOutline (organized,
-                                                   plane,
-                                                   *keypoints_,
-                                                   free_objects[o],
-                                                   agree,
-                                                   min_keypoints_,
-                                                   min_model_edge_);
+    FreeObjects copies = copiesOfItsFlatTops (organized,
+                                              plane,
+                                              surface_.keypoint_pixels,
+                                              free_objects[o],
+                                              agree,
+                                              min_keypoints_,
+                                              min_model_edge_);
+    if (copies.size() < 2)
+      copies = copiesOfItsOutline (organized,
+                                   plane,
+                                   *keypoints_,
+                                   free_objects[o],
+                                   agree,
+                                   min_keypoints_,
+                                   min_model_edge_);
     if (copies.size() < 2)
       continue;
     used[o] = true;

@@ -29,13 +29,19 @@ boxPose (double x, double y, double z, double roll, double tilt)
 }
 
 RenderedObjectsScene
-renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth)
+renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth, double view_tilt)
 {
+  const Eigen::Isometry3d turn =
+      Eigen::Translation3d (0.0, 0.0, table_depth) *
+      Eigen::AngleAxisd (view_tilt * M_PI / 180.0, Eigen::Vector3d::UnitX()) *
+      Eigen::Translation3d (0.0, 0.0, -table_depth);
   RenderedObjectsScene result;
   result.boxes = boxes;
+  for (auto& box : result.boxes)
+    box.pose = turn * box.pose;
   mid::simulation::Scene scene;
   std::map<std::string, cv::Mat> textures;
-  for (const auto& box : boxes) {
+  for (const auto& box : result.boxes) {
     if (textures.count (box.texture) == 0) {
       cv::Mat image;
       if (!mid::simulation::loadTexture (
@@ -45,7 +51,9 @@ renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth)
     }
     auto shape = std::make_shared<mid::simulation::BoxShape> (
         box.size.x(), box.size.y(), box.size.z());
-    shape->setTexture (mid::simulation::makeUniformTexture (cv::Vec3b (200, 200, 200)));
+    shape->setTexture (box.printed_all_around ? textures[box.texture]
+                                              : mid::simulation::makeUniformTexture (
+                                                    cv::Vec3b (200, 200, 200)));
     shape->setFaceTexture (mid::simulation::BoxShape::NEG_Z, textures[box.texture]);
     scene.addObject (shape, box.pose);
   }
@@ -54,7 +62,7 @@ renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth)
     table->setTexture (mid::simulation::makeUniformTexture (cv::Vec3b (120, 120, 120)));
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.translation().z() = table_depth;
-    scene.addBackgroundObject (table, pose);
+    scene.addBackgroundObject (table, turn * pose);
   }
   mid::simulation::SceneRenderer renderer;
   if (!renderer.render (scene, result.frame))

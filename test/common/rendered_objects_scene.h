@@ -22,6 +22,10 @@ struct BoxSpec
   Eigen::Vector3d size{0.16, 0.11, 0.04};
   /** \brief Model -> camera pose. */
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  /** \brief The image on every face, not only on the one towards the camera: a side face that
+    * shows holds keypoints too.
+    */
+  bool printed_all_around = false;
 };
 
 /** \brief A rendered frame of boxes in front of an untextured background, exactly known. */
@@ -42,9 +46,14 @@ boxPose (double x, double y, double z, double roll, double tilt = 0.0);
   * \param[in] boxes the boxes
   * \param[in] table_depth > 0: an untextured table facing the camera at this depth (metres)
   * behind the boxes, as a table seen from above; 0: empty space (no depth) around them
+  * \param[in] view_tilt degrees: the whole scene (boxes and table) turned by this about the
+  * camera's x axis through (0, 0, table_depth), a table seen obliquely, its side faces
+  * showing; the result's boxes hold the turned poses
   */
 RenderedObjectsScene
-renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth = 0.0);
+renderBoxes (const std::vector<BoxSpec>& boxes,
+             double table_depth = 0.0,
+             double view_tilt = 0.0);
 
 /** \brief The box (index into the scene's boxes) most of the given image keypoints lie on, or -1
   * if most lie on the background (or outside the image), and, when `share` is given, the share

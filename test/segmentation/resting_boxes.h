@@ -76,8 +76,11 @@ insideBox (const BoxSpec& box, const Eigen::Vector3f& point)
 
 struct RestingBoxes : RenderedKeypoints
 {
-  explicit RestingBoxes (const std::vector<BoxSpec>& boxes, double table = kTableDepth)
-  : RenderedKeypoints (renderBoxes (boxes, table))
+  /** \param[in] view_tilt see renderBoxes() */
+  explicit RestingBoxes (const std::vector<BoxSpec>& boxes,
+                         double table = kTableDepth,
+                         double view_tilt = 0.0)
+  : RenderedKeypoints (renderBoxes (boxes, table, view_tilt))
   {}
 
   /** A model of the given boxes at their true poses, in the frame of the first box moved by

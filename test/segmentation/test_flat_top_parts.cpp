@@ -161,4 +161,36 @@ TEST (FlatTopParts, RefusesBadInput)
   EXPECT_TRUE (parts.empty());
 }
 
+TEST (FlatTopSizes, SuggestsTheSizeOfEachBoxOfAJoin)
+{
+  const FlushScene scene = flushScene();
+  std::vector<Eigen::Vector3f> sizes;
+  ASSERT_TRUE (mid::flatTopSizes (scene.organized, kPlane, scene.surface, sizes));
+  ASSERT_EQ (sizes.size(), 2u);
+  // One per top, whatever their order: each within a few millimetres of its box.
+  for (const Eigen::Vector3d& box : {kLow, kTall})
+    EXPECT_TRUE (std::any_of (sizes.begin(),
+                              sizes.end(),
+                              [&] (const Eigen::Vector3f& size) {
+                                return (size - ascending (box)).cwiseAbs().maxCoeff() <
+                                       0.006f;
+                              }))
+        << "no size near " << box.transpose();
+}
+
+TEST (FlatTopSizes, RefusesBadInput)
+{
+  const FlushScene scene = flushScene();
+  std::vector<Eigen::Vector3f> sizes = {Eigen::Vector3f::Ones()};
+  pcl::Indices outside = scene.surface;
+  outside.push_back (static_cast<pcl::index_t> (scene.organized.size()));
+  EXPECT_FALSE (mid::flatTopSizes (scene.organized, kPlane, outside, sizes));
+  EXPECT_TRUE (sizes.empty());
+  sizes = {Eigen::Vector3f::Ones()};
+  pcl::PointCloud<pcl::PointXYZ> unorganized;
+  unorganized.push_back (pcl::PointXYZ (0.0f, 0.0f, 1.0f));
+  EXPECT_FALSE (mid::flatTopSizes (unorganized, kPlane, {0}, sizes));
+  EXPECT_TRUE (sizes.empty());
+}
+
 } // namespace

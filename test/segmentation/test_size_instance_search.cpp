@@ -548,3 +548,46 @@ TEST (SizeInstanceSearch, FindsASecondCopyJoinedWithAnotherBoxByItsFlatTop)
   EXPECT_TRUE (discoverBySize (level_search, found).empty());
   EXPECT_EQ (found, 0u);
 }
+
+namespace {
+
+/** The table seen at 55 deg above it: the boxes' sides towards the camera show. */
+constexpr double kViewTilt = 35.0;
+
+/** Box 0 (50 x 60 x 150 mm) stands, and a box of its size but `lying_depth` deep (60 mm: a
+  * copy, with another print) lies on its 50 x 150 face with an end against it, their sides
+  * towards the camera in one plane: the standing box's top, their sides and the lying box's
+  * top grow into one object, and no copy shows alone. Box 2, of another size, lies apart.
+  */
+std::vector<mid::test::BoxSpec>
+standingAndLyingFlush (double lying_depth)
+{
+  constexpr double kSide = -0.05; // y of the sides in one plane
+  const Eigen::Vector3d standing (0.05, 0.06, 0.15);
+  std::vector<mid::test::BoxSpec> boxes = {
+      restingBox (kApplePrint, 0.1, kSide + 0.5 * standing.y(), 0.0, standing),
+      restingBox (kSoyPrint, 0.0, 0.0, 0.0, {0.05, lying_depth, 0.15}),
+      restingBox (kApplePrint, -0.15, -0.1, 30.0, {0.1, 0.07, 0.05})};
+  // Box 1 turned about y onto its side: its 150 mm edge along x, 50 mm high.
+  boxes[1].pose =
+      mid::test::boxPose (
+          0.0, kSide + 0.5 * lying_depth, mid::test::kTableDepth - 0.025, 0.0) *
+      Eigen::AngleAxisd (0.5 * M_PI, Eigen::Vector3d::UnitY());
+  boxes[0].printed_all_around = boxes[1].printed_all_around = true;
+  return boxes;
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch, FindsTwoCopiesJoinedWithEachOtherByTheirFlatTops)
+{
+  // Their tops, at two of the box's edges, say what the two boxes are.
+  const Boxes scene (standingAndLyingFlush (0.06), mid::test::kTableDepth, kViewTilt);
+  expectOneModelOfBoxes (scene, discoveringSearchIn (scene), {0, 1});
+
+  // A lying box 15 mm deeper is no copy of the standing one.
+  const Boxes other (standingAndLyingFlush (0.075), mid::test::kTableDepth, kViewTilt);
+  std::size_t found = 0;
+  EXPECT_TRUE (discoverBySize (discoveringSearchIn (other), found).empty());
+  EXPECT_EQ (found, 0u);
+}

@@ -44,4 +44,32 @@ flatTopParts (const pcl::PointCloud<pcl::PointXYZ>& organized,
               const Eigen::Vector3f& size,
               std::vector<pcl::Indices>& parts);
 
+/** \brief The boxes whose flat tops an object's surface shows, their sizes not known (not in
+  * the paper): what flatTopParts() may be asked for.
+  *
+  * Two copies of one product joined into one object (one standing, one lying, or touching
+  * each other end to end at right angles) show their tops at the heights of different
+  * edges. Each connected patch of level pixels (as flatTopParts() finds them; neighbouring
+  * pixels within 3 mm of each other's height) of at least 30 pixels suggests a box: its
+  * median height above the plane and the edges of the smallest rectangle on the plane around
+  * it and its rim (the pixels within 4 of it and within 3 mm of its height: where the normal
+  * bends towards the sides, the top is not level; no farther, where a neighbour's side stands
+  * flush). Such a size is a guess; the parts flatTopParts() finds for it, measured on their
+  * own (fitInstanceBox()), say what the boxes are. Copies side by side with their tops at one
+  * height make one patch, of neither's size.
+  *
+  * \param[in] organized the frame (camera frame, metres; NaN where the depth is missing)
+  * \param[in] plane the support plane (fitSupportPlane())
+  * \param[in] surface the object's pixels (row * width + column), each with a point
+  * \param[out] sizes one per patch (edges ascending, metres), in the order of the patches'
+  * first pixels in `surface`; patches below the plane are left out
+  * \return false (with a PCL_ERROR, sizes empty) if the cloud is not organized or a pixel
+  * lies outside it or has no point
+  */
+bool
+flatTopSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
+              const Eigen::Vector4f& plane,
+              const pcl::Indices& surface,
+              std::vector<Eigen::Vector3f>& sizes);
+
 } // namespace mid
