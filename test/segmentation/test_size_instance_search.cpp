@@ -380,6 +380,25 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
   EXPECT_TRUE (discoverBySize (search, found).empty());
 }
 
+TEST (SizeInstanceSearch, PairsTwoObjectsThatNoOtherAgreesWithAtALooserTolerance)
+{
+  // Box 1 is 7.5 mm higher than box 0: beyond the 6 mm tolerance, within 1.3 times it, as a
+  // copy measured a little off would be. Box 2 has another size.
+  const Eigen::Vector3d higher (0.12, 0.09, 0.0475);
+  const Boxes scene ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
+                      restingBox (kSoyPrint, 0.16, -0.12, -35.0, higher),
+                      restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})});
+  expectOneModelOfBoxes (scene, discoveringSearchIn (scene), {0, 1});
+
+  // 10 mm higher, the two are boxes of two sizes.
+  const Boxes apart ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
+                      restingBox (kSoyPrint, 0.16, -0.12, -35.0, {0.12, 0.09, 0.05}),
+                      restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})});
+  std::size_t found = 0;
+  EXPECT_TRUE (discoverBySize (discoveringSearchIn (apart), found).empty());
+  EXPECT_EQ (found, 0u);
+}
+
 TEST (SizeInstanceSearch, CutsCopiesTouchingFlushByTheSizeOfCopiesStandingAlone)
 {
   // Boxes 0 and 1 stand alone and agree on their size; boxes 2 and 3, of that size, touch
