@@ -2,6 +2,7 @@
 // none of a model's landmarks, found by the size of their box.
 #include "resting_boxes.h"
 
+#include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/size_instance_search.h>
 
 #include <gtest/gtest.h>
@@ -9,7 +10,9 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
+#include <vector>
 
 namespace {
 
@@ -380,22 +383,55 @@ TEST (SizeInstanceSearch, MakesAModelOfObjectsOfOneSizeStandingAlone)
   EXPECT_TRUE (discoverBySize (search, found).empty());
 }
 
-TEST (SizeInstanceSearch, PairsTwoObjectsThatNoOtherAgreesWithAtALooserTolerance)
-{
-  // Box 1 is 7.5 mm higher than box 0: beyond the 6 mm tolerance, within 1.3 times it, as a
-  // copy measured a little off would be. Box 2 has another size.
-  const Eigen::Vector3d higher (0.12, 0.09, 0.0475);
-  const Boxes scene ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
-                      restingBox (kSoyPrint, 0.16, -0.12, -35.0, higher),
-                      restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})});
-  expectOneModelOfBoxes (scene, discoveringSearchIn (scene), {0, 1});
+namespace {
 
-  // 10 mm higher, the two are boxes of two sizes.
-  const Boxes apart ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
-                      restingBox (kSoyPrint, 0.16, -0.12, -35.0, {0.12, 0.09, 0.05}),
-                      restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})});
+/** discoveringSearchIn(), with the frame's chromaticities, which the looser agreement of two
+  * objects' sizes needs; box `tinted` (if >= 0) recoloured blue, its grey levels kept
+  * (tintKeepingGreyLevels()): the same keypoints, other colours.
+  */
+mid::SizeInstanceSearch
+discoveringSearchInColour (const Boxes& scene, int tinted = -1)
+{
+  mid::SizeInstanceSearch search = discoveringSearchIn (scene);
+  pcl::PointCloud<pcl::PointXYZRGB> colour;
+  pcl::copyPointCloud (*scene.scene.cloud, colour);
+  if (tinted >= 0) {
+    EXPECT_GT (mid::test::tintKeepingGreyLevels (scene.scene, tinted, colour), 1000u);
+  }
+  mid::KeypointSurface surface = scene.surface;
+  surface.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
+      mid::chromaticities (colour));
+  search.setKeypointSurface (surface);
+  return search;
+}
+
+/** Box 0 flat, box 1 of its print `higher` metres higher, and box 2 of another size. */
+std::vector<mid::test::BoxSpec>
+twoALittleApart (double higher)
+{
+  return {restingBox (kApplePrint, -0.16, -0.1, 10.0),
+          restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.12, 0.09, 0.04 + higher}),
+          restingBox (kApplePrint, 0.0, 0.13, 60.0, {0.1, 0.07, 0.05})};
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch,
+      PairsTwoObjectsThatNoOtherAgreesWithAtALooserToleranceIfTheyLookAlike)
+{
+  // 7.5 mm higher: beyond the 6 mm tolerance, within 1.3 times it, as a copy measured a
+  // little off would be.
+  const Boxes scene (twoALittleApart (0.0075));
+  expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
+
   std::size_t found = 0;
-  EXPECT_TRUE (discoverBySize (discoveringSearchIn (apart), found).empty());
+  // Without colours, nothing says that the two look alike.
+  EXPECT_TRUE (discoverBySize (discoveringSearchIn (scene), found).empty());
+  // 10 mm higher, the two are boxes of two sizes.
+  const Boxes apart (twoALittleApart (0.01));
+  EXPECT_TRUE (discoverBySize (discoveringSearchInColour (apart), found).empty());
+  // In other colours, the two are two products.
+  EXPECT_TRUE (discoverBySize (discoveringSearchInColour (scene, 1), found).empty());
   EXPECT_EQ (found, 0u);
 }
 

@@ -51,7 +51,9 @@ namespace mid {
   *    `max_surrounded_share` of the pixels around their surface hold something else than
   *    the plane and the object's own box: not in a pile, a bin or a row of touching
   *    objects), by size: two or more of one size (or two that no other agrees with, at 1.3
-  *    times the tolerances: copies measured a little off, a hidden end or a rim that shows)
+  *    times the tolerances, whose colours overlap by half at least, when the frame's
+  *    chromaticities are given: copies measured a little off, a hidden end or a rim that
+  *    shows)
   *    become a new model, in the box frame of the copy with the most keypoints,
   *    each copy an instance posed by its box (up to the box's symmetries), all their
   *    keypoints landmarks. Such a group also cuts, as in step 3, the other objects of no

@@ -35,7 +35,8 @@ struct KeypointSurface
   std::shared_ptr<const std::vector<float>> intensity = nullptr;
   /** \brief The chromaticity of each pixel of `organized` (chromaticities(); NaN where the
     * pixel is too dark to tell), or null: the photometric verification then compares grey
-    * levels only (PhotometricVerification::setMaxChromaticityDifference()).
+    * levels only (PhotometricVerification::setMaxChromaticityDifference()), and
+    * SizeInstanceSearch pairs no two objects at its looser size agreement.
     */
   std::shared_ptr<const std::vector<Chromaticity>> chromaticity = nullptr;
   /** \brief The projection of `organized` onto its pixels when known (the camera's intrinsics,
