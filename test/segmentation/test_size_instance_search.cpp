@@ -419,7 +419,7 @@ twoALittleApart (double higher)
 TEST (SizeInstanceSearch,
       PairsTwoObjectsThatNoOtherAgreesWithAtALooserToleranceIfTheyLookAlike)
 {
-  // 7.5 mm higher: beyond the 6 mm tolerance, within 1.3 times it, as a copy measured a
+  // 7.5 mm higher: beyond the 6 mm tolerance, within 1.5 times it, as a copy measured a
   // little off would be.
   const Boxes scene (twoALittleApart (0.0075));
   expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
@@ -427,7 +427,7 @@ TEST (SizeInstanceSearch,
   std::size_t found = 0;
   // Without colours, nothing says that the two look alike.
   EXPECT_TRUE (discoverBySize (discoveringSearchIn (scene), found).empty());
-  // 10 mm higher, the two are boxes of two sizes.
+  // 10 mm higher (1.67 times the tolerance), the two are boxes of two sizes.
   const Boxes apart (twoALittleApart (0.01));
   EXPECT_TRUE (discoverBySize (discoveringSearchInColour (apart), found).empty());
   // In other colours, the two are two products.

@@ -50,7 +50,7 @@ namespace mid {
   *    when asked (setMaxSurroundedShare() below 1), that stand alone on the plane (at most
   *    `max_surrounded_share` of the pixels around their surface hold something else than
   *    the plane and the object's own box: not in a pile, a bin or a row of touching
-  *    objects), by size: two or more of one size (or two that no other agrees with, at 1.3
+  *    objects), by size: two or more of one size (or two that no other agrees with, at 1.5
   *    times the tolerances, whose colours overlap by half at least, when the frame's
   *    chromaticities are given: copies measured a little off, a hidden end or a rim that
   *    shows)
