@@ -624,9 +624,9 @@ copyByItsFlatTop (const pcl::PointCloud<pcl::PointXYZ>& organized,
   * than `min_edge`, its parts (flatTopCopies(); a part holding no keypoint that an earlier one
   * does not is the same top again) with no edge shorter than `min_edge` that agree in size
   * with the first of them and, at twice the tolerances (a suggestion is a level patch's
-  * rectangle, not a measured box), with the suggestion. A keypoint two parts hold (where the copies touch) is
-  * neither's; the first suggestion that leaves two parts of `min_keypoints` gives the copies.
-  * None otherwise.
+  * rectangle, not a measured box), with the suggestion. A keypoint two parts hold (where the
+  * copies touch) is neither's; the first suggestion that leaves two parts of `min_keypoints`
+  * gives the copies. None otherwise.
   */
 FreeObjects
 copiesOfItsFlatTops (const pcl::PointCloud<pcl::PointXYZ>& organized,
