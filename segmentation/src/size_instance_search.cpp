@@ -55,6 +55,12 @@ modelOfSize (const Eigen::Vector3f& size,
   return best;
 }
 
+/** How close (shortest edges of the box) the centres of two boxes of one size lie when they
+  * are one copy: a box with shortest edge e holds a sphere of diameter e around its centre
+  * (InterpenetrationFilter, whose default this is).
+  */
+constexpr float kSameCopyDistance = 0.8f;
+
 /** Where the copies that SizeInstanceSearch finds go: into the model of their size, as
   * instances of their keypoints at their boxes' poses, or into a new model of copies. A
   * keypoint goes to one copy at most.
@@ -88,7 +94,8 @@ public:
   }
 
   /** The model of the object's size (modelOfSize()), -1 if none; the object joins it unless
-    * one of its keypoints went to another copy already.
+    * one of its keypoints went to another copy already, or the model has a copy where it
+    * lies (occupied()).
     */
   int
   joinModelOfItsSize (const FreeObject& object)
@@ -96,7 +103,8 @@ public:
     Eigen::Matrix4f box_in_model = Eigen::Matrix4f::Identity();
     const int m = modelOfSize (
         object.extent.size, models_, sizes_, extents_, agree_, box_in_model);
-    if (m < 0 || !untaken (object))
+    if (m < 0 || !untaken (object) ||
+        occupied (models_[static_cast<std::size_t> (m)], box_in_model, object.extent))
       return m;
     addInstanceOfKeypoints (keypoints_,
                             descriptors_,
@@ -153,6 +161,27 @@ public:
   }
 
 private:
+  /** True if an instance of `model` already occupies the box `box` (a copy of the model's
+    * box `box_in_model`): its box's centre lies closer than kSameCopyDistance shortest edges
+    * to `box`'s (the InterpenetrationFilter's rule). The object is then that copy seen again:
+    * its surface, or the part of it that the instance's keypoints leave free.
+    */
+  static bool
+  occupied (const ObjectModel& model,
+            const Eigen::Matrix4f& box_in_model,
+            const InstanceExtent& box)
+  {
+    const float reach = kSameCopyDistance * box.size.minCoeff();
+    return std::any_of (
+        model.instances.begin(),
+        model.instances.end(),
+        [&] (const ModelInstance& instance) {
+          return ((instance.pose * box_in_model).topRightCorner<3, 1>() -
+                  box.pose.topRightCorner<3, 1>())
+                     .norm() < reach;
+        });
+  }
+
   void
   take (const FreeObject& copy)
   {

@@ -106,6 +106,33 @@ TEST (SizeInstanceSearch, FindsACopyShowingAnotherFaceUpByItsSize)
   expectNothingFound (searchIn (scene), models[0]);
 }
 
+TEST (SizeInstanceSearch, AddsNoCopyWhereTheModelHasOneAlready)
+{
+  // The model knows a copy on box 2 (at its true pose, up to the box's symmetries) that
+  // observes none of its keypoints: they stay free, and their object has the model's size.
+  // It is that copy seen again, not a second one.
+  const Boxes scene (twoFlatOneOnItsSide());
+  mid::ObjectModels models = {scene.modelOf ({0, 1})};
+  std::size_t found = 0;
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  ASSERT_EQ (models[0].instances.size(), 3u);
+  mid::ModelInstance known = models[0].instances[2];
+  known.keypoints.clear();
+  known.landmarks.clear();
+  mid::ObjectModel model = scene.modelOf ({0, 1});
+  model.instances.push_back (known);
+  expectNothingFound (searchIn (scene), model);
+
+  // Known 20 cm away from box 2, over the empty table, the copy on box 2 is found.
+  model.instances.back().pose (1, 3) += 0.2f;
+  models = {model};
+  ASSERT_TRUE (searchIn (scene).search (models, found));
+  EXPECT_EQ (found, 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  EXPECT_EQ (scene.boxOf (models[0].instances[3].keypoints), 2);
+  expectPoseOfTheBoxOnItsSide (scene, models[0].instances[3]);
+}
+
 TEST (SizeInstanceSearch, NeedsCopiesThatAgreeOnTheSizeAndKeypointsToReport)
 {
   const Boxes scene (twoFlatOneOnItsSide());
