@@ -30,11 +30,6 @@ constexpr float kFootprintCoverage = 0.75f;
   */
 constexpr float kFootprintReach = 0.05f;
 
-/** How much nearer the camera than an object's outline a point around it must lie to hide
-  * part of the object (metres; occludedOutlineShare()).
-  */
-constexpr float kOccluderStep = 0.01f;
-
 /** Largest share of the smallest rectangle around an object's footprint that two or three
   * copies touching each other may fill (footprintCopySizes()): a footprint that fills more may
   * be one box of its size.
@@ -85,19 +80,6 @@ footprintOf (const pcl::PointCloud<pcl::PointXYZ>& organized,
   for (const auto pixel : object.pixels)
     footprint.push_back (on_plane (organized[pixel].getVector3fMap()));
   return footprint;
-}
-
-/** The axis of the box that stands up: the one closest to the plane's normal. */
-int
-upAxis (const InstanceExtent& extent, const Eigen::Vector4f& plane)
-{
-  const Eigen::Vector3f normal = plane.head<3>();
-  int up = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs (extent.pose.col (i).head<3>().dot (normal)) >
-        std::abs (extent.pose.col (up).head<3>().dot (normal)))
-      up = i;
-  return up;
 }
 
 /** The object's height above the plane: its box's edge along upAxis(). */

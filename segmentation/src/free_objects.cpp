@@ -70,6 +70,18 @@ constexpr float kOwnPointMargin = 0.003f;
 
 } // namespace
 
+int
+upAxis (const InstanceExtent& extent, const Eigen::Vector4f& plane)
+{
+  const Eigen::Vector3f normal = plane.head<3>();
+  int up = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs (extent.pose.col (i).head<3>().dot (normal)) >
+        std::abs (extent.pose.col (up).head<3>().dot (normal)))
+      up = i;
+  return up;
+}
+
 OrientedBoxes
 foundCopyBoxes (const ObjectModels& models, const ModelSizes& sizes)
 {

@@ -31,6 +31,15 @@ constexpr float kBoxMargin = 0.005f;
   */
 constexpr int kRingPixels = 4;
 
+/** \brief How much nearer the camera than an object's outline a point around it must lie to
+  * hide part of the object (metres; occludedOutline()).
+  */
+constexpr float kOccluderStep = 0.01f;
+
+/** \brief The axis of the box that stands up: the one closest to the plane's normal. */
+int
+upAxis (const InstanceExtent& extent, const Eigen::Vector4f& plane);
+
 /** \brief A box in the camera frame (camera -> box frame, and half its edges), and the test of
   * the points inside it.
   */

@@ -11,19 +11,21 @@
 namespace mid {
 
 bool
-occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                      const pcl::Indices& pixels,
-                      int ring,
-                      float step,
-                      float& share)
+occludedOutline (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                 const pcl::Indices& pixels,
+                 int ring,
+                 float step,
+                 pcl::Indices& outline,
+                 pcl::Indices& hidden)
 {
-  share = 0.0f;
+  outline.clear();
+  hidden.clear();
   if (!organized.isOrganized() || organized.empty()) {
-    PCL_ERROR ("[mid::occludedOutlineShare] The cloud is not organized.\n");
+    PCL_ERROR ("[mid::occludedOutline] The cloud is not organized.\n");
     return false;
   }
   if (ring < 1 || !(step > 0.0f) || !std::isfinite (step)) {
-    PCL_ERROR ("[mid::occludedOutlineShare] The ring must be >= 1 pixel and the step "
+    PCL_ERROR ("[mid::occludedOutline] The ring must be >= 1 pixel and the step "
                "finite and > 0.\n");
     return false;
   }
@@ -31,7 +33,7 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
   if (std::any_of (pixels.begin(), pixels.end(), [size] (pcl::index_t p) {
         return p < 0 || p >= size;
       })) {
-    PCL_ERROR ("[mid::occludedOutlineShare] A pixel lies outside the cloud.\n");
+    PCL_ERROR ("[mid::occludedOutline] A pixel lies outside the cloud.\n");
     return false;
   }
   const int width = static_cast<int> (organized.width);
@@ -47,7 +49,6 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
     return row >= 0 && row < height && column >= 0 && column < width &&
            on[index (row, column)] == 0;
   };
-  std::size_t outline = 0, hidden = 0;
   for (std::size_t i = 0; i < on.size(); ++i) {
     if (on[i] == 0)
       continue; // each pixel once, whatever `pixels` repeats
@@ -55,7 +56,7 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
     if (!offSurface (row - 1, column) && !offSurface (row + 1, column) &&
         !offSurface (row, column - 1) && !offSurface (row, column + 1))
       continue;
-    ++outline;
+    outline.push_back (static_cast<pcl::index_t> (i));
     const float depth = organized[i].z;
     bool behind = false;
     for (int r = std::max (0, row - ring);
@@ -65,10 +66,25 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
            !behind && c <= std::min (width - 1, column + ring);
            ++c)
         behind = on[index (r, c)] == 0 && organized[index (r, c)].z < depth - step;
-    hidden += behind ? 1 : 0;
+    if (behind)
+      hidden.push_back (static_cast<pcl::index_t> (i));
   }
-  share =
-      outline == 0 ? 0.0f : static_cast<float> (hidden) / static_cast<float> (outline);
+  return true;
+}
+
+bool
+occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const pcl::Indices& pixels,
+                      int ring,
+                      float step,
+                      float& share)
+{
+  share = 0.0f;
+  pcl::Indices outline, hidden;
+  if (!occludedOutline (organized, pixels, ring, step, outline, hidden))
+    return false;
+  if (!outline.empty())
+    share = static_cast<float> (hidden.size()) / static_cast<float> (outline.size());
   return true;
 }
 

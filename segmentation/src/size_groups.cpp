@@ -22,20 +22,8 @@ constexpr float kLoosePairFactor = 1.5f;
 /** Chromaticity bins along each of its two axes (colourOverlap()). */
 constexpr int kColourBins = 6;
 
-/** Smallest share of two objects' colours that must overlap (colourOverlap()) for their sizes
-  * to agree at kLoosePairFactor: copies that show different faces still share much of their
-  * print's colours. The three loose pairs of copies on the benchmark overlap by 0.53, 0.92
-  * and 0.94, the soy-milk and juice cartons by 0.16, a black and a white mug of a real table by
-  * 0.21. The groups of one size overlap by 0.24 to 1 (0.71 in the median group, a tenth below
-  * 0.38): too little for a check of every group, enough for the pairs the size alone does not
-  * make.
-  */
-constexpr float kMinLoosePairColourOverlap = 0.5f;
+} // namespace
 
-/** The share of their pixels two objects' colours have in common: the intersection of their
-  * histograms over kColourBins x kColourBins chromaticity bins and one of the pixels too dark
-  * to tell. 0 without chromaticities.
-  */
 float
 colourOverlap (const KeypointSurface& surface, const FreeObject& a, const FreeObject& b)
 {
@@ -63,8 +51,6 @@ colourOverlap (const KeypointSurface& surface, const FreeObject& a, const FreeOb
     overlap += std::min (first[i], second[i]);
   return overlap;
 }
-
-} // namespace
 
 std::vector<std::vector<std::size_t>>
 groupsOfOneSize (const FreeObjects& objects,

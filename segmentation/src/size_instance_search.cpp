@@ -1,5 +1,6 @@
 #include "copy_cutter.h"
 #include "free_objects.h"
+#include "hidden_copy.h"
 #include "size_groups.h"
 
 #include <mid/segmentation/instance_extent.h>
@@ -294,6 +295,40 @@ discoverModelsOfCopies (const FreeObjects& objects,
   }
 }
 
+/** Two of the `founders` not yet `used`, one a copy of the other's box that something in front
+  * hides in part (completeHiddenCopy()), that look alike (colourOverlap() of
+  * kMinLoosePairColourOverlap at least), make a model: the hidden copy with its box
+  * completed. Each object takes the first such partner, in the order of `founders`.
+  */
+void
+pairHiddenCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                  const Eigen::Vector4f& plane,
+                  const FreeObjects& objects,
+                  const std::vector<std::size_t>& founders,
+                  const SizeAgreement& agree,
+                  const KeypointSurface& surface,
+                  CopyPlacement& placement,
+                  std::vector<bool>& used)
+{
+  for (const std::size_t whole : founders)
+    for (const std::size_t part : founders) {
+      if (used[whole] || used[part] || part == whole)
+        continue;
+      FreeObject hidden = objects[part];
+      if (!detail::completeHiddenCopy (organized,
+                                       plane,
+                                       objects[whole].extent.size,
+                                       hidden,
+                                       agree,
+                                       hidden.extent) ||
+          detail::colourOverlap (surface, objects[whole], hidden) <
+              detail::kMinLoosePairColourOverlap)
+        continue;
+      used[whole] = used[part] = true;
+      placement.addModelOfCopies ({objects[whole], hidden});
+    }
+}
+
 } // namespace
 
 std::string
@@ -409,6 +444,8 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
                           min_keypoints_,
                           placement,
                           used);
+  pairHiddenCopies (
+      organized, plane, free_objects, founders, agree, surface_, placement, used);
   // An object that is no rectangle has a box that may reach around a found copy: its parts'
   // boxes must not.
   for (const FreeObject& object : boxing_found) {

@@ -1,9 +1,10 @@
-// occludedOutlineShare() on hand-made organized frames: a square surface with something in
-// front of one of its sides, behind it, or nothing around it.
+// occludedOutlineShare() and occludedOutline() on hand-made organized frames: a square
+// surface with something in front of one of its sides, behind it, or nothing around it.
 #include <mid/segmentation/occluded_outline.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -89,4 +90,27 @@ TEST (OccludedOutline, RefusesBadInput)
   pcl::PointCloud<pcl::PointXYZ> unorganized;
   unorganized.push_back (pcl::PointXYZ (0.0f, 0.0f, 1.0f));
   refuses (unorganized, {0}, kRing, kStep);
+}
+
+TEST (OccludedOutline, ListsTheOutlineAndTheHiddenPixels)
+{
+  // Columns 22-29 nearer, 3 pixels right of the square: the hidden pixels are its right
+  // column (19) and the top and bottom pixels of column 18, each listed once.
+  pcl::Indices outline, hidden;
+  ASSERT_TRUE (mid::occludedOutline (
+      frame (22, 29, 0.95f), square(), kRing, kStep, outline, hidden));
+  EXPECT_EQ (outline.size(), 36u);
+  pcl::Indices expected = {10 * kSide + 18, 19 * kSide + 18};
+  for (int row = 10; row < 20; ++row)
+    expected.push_back (row * kSide + 19);
+  std::sort (hidden.begin(), hidden.end());
+  std::sort (expected.begin(), expected.end());
+  EXPECT_EQ (hidden, expected);
+  for (const auto p : hidden)
+    EXPECT_NE (std::find (outline.begin(), outline.end(), p), outline.end());
+
+  // Bad input empties both lists.
+  EXPECT_FALSE (mid::occludedOutline (frame(), square(), 0, kStep, outline, hidden));
+  EXPECT_TRUE (outline.empty());
+  EXPECT_TRUE (hidden.empty());
 }

@@ -673,3 +673,36 @@ TEST (SizeInstanceSearch, FindsTwoCopiesJoinedWithEachOtherByTheirFlatTops)
   EXPECT_TRUE (discoverBySize (discoveringSearchIn (other), found).empty());
   EXPECT_EQ (found, 0u);
 }
+
+namespace {
+
+/** Box 0 lies whole; box 1, of its print and size but `length` long (its 0.12 m edge away from
+  * the camera), lies behind box 2, a wall of another print 0.1 m high, 15 mm before its near
+  * end (if `hiding`; else 0.3 m aside): seen at 55 deg, the wall hides box 1's near end.
+  */
+std::vector<mid::test::BoxSpec>
+oneBehindAWall (double length, bool hiding)
+{
+  return {
+      restingBox (kApplePrint, -0.15, 0.05, 90.0),
+      restingBox (kApplePrint, 0.1, 0.11 - 0.5 * length, 90.0, {length, 0.09, 0.04}),
+      restingBox (kSoyPrint, hiding ? 0.1 : -0.2, -0.05, 0.0, {0.14, 0.05, 0.1})};
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch, PairsACopyThatSomethingInFrontHidesInPart)
+{
+  // Box 1 measures about 90 mm long, no size of box 0's; its near end is hidden, and its box
+  // completed beyond that end to box 0's length is a copy's, at its true place.
+  const Boxes scene (oneBehindAWall (0.12, true), mid::test::kTableDepth, kViewTilt);
+  expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
+
+  std::size_t found = 0;
+  // Without colours, nothing says that the two look alike.
+  EXPECT_TRUE (discoverBySize (discoveringSearchIn (scene), found).empty());
+  // A box 90 mm long in plain view is no copy.
+  const Boxes shorter (oneBehindAWall (0.09, false), mid::test::kTableDepth, kViewTilt);
+  EXPECT_TRUE (discoverBySize (discoveringSearchInColour (shorter), found).empty());
+  EXPECT_EQ (found, 0u);
+}

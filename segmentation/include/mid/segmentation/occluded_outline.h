@@ -33,4 +33,20 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
                       float step,
                       float& share);
 
+/** \brief The outline of a surface and the part of it that something in front hides, pixel by
+  * pixel (see occludedOutlineShare(), which counts them).
+  *
+  * \param[in] organized, pixels, ring, step see occludedOutlineShare()
+  * \param[out] outline the outline's pixels (each once, in the order of the frame)
+  * \param[out] hidden those of them that something in front hides
+  * \return false (with a PCL_ERROR, both outputs empty) as occludedOutlineShare()
+  */
+bool
+occludedOutline (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                 const pcl::Indices& pixels,
+                 int ring,
+                 float step,
+                 pcl::Indices& outline,
+                 pcl::Indices& hidden);
+
 } // namespace mid

@@ -1,0 +1,157 @@
+#include "hidden_copy.h"
+
+#include <mid/segmentation/occluded_outline.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+#include <utility>
+
+namespace mid {
+namespace detail {
+
+namespace {
+
+/** Smallest share of the whole copy's edge that the hidden one must show. */
+constexpr float kMinVisibleShare = 0.6f;
+/** How far from the end face of a box its outline pixels lie that tell whether the end is
+  * hidden (metres).
+  */
+constexpr float kEndBand = 0.01f;
+/** Smallest share of an end's outline pixels that something in front must hide. */
+constexpr float kMinHiddenEnd = 0.5f;
+/** How far from an outline pixel a point in front must lie to hide it (pixels): a surface
+  * grown beside a nearer occluder stops up to 6 pixels short of it, where its pixels lie
+  * behind the chord between their neighbours 6 pixels away (growInstanceSurfaces()).
+  */
+constexpr int kOccluderRing = 8;
+/** Fewest outline pixels at an end for its share to count. */
+constexpr std::size_t kMinEndPixels = 5;
+
+/** The edge of `whole` of which `hidden`'s edge `i` shows a part: their other two edges agree
+  * (either way round), and edge i is shorter beyond the tolerance but kMinVisibleShare of it
+  * at least. -1 if none.
+  */
+int
+shortenedEdge (const Eigen::Vector3f& whole,
+               const Eigen::Vector3f& hidden,
+               int i,
+               const SizeAgreement& agree)
+{
+  const auto othersAgree = [&] (int j) {
+    const float a0 = whole[(j + 1) % 3], a1 = whole[(j + 2) % 3];
+    const float b0 = hidden[(i + 1) % 3], b1 = hidden[(i + 2) % 3];
+    return (agree.edgesAgree (a0, b0) && agree.edgesAgree (a1, b1)) ||
+           (agree.edgesAgree (a0, b1) && agree.edgesAgree (a1, b0));
+  };
+  for (int j = 0; j < 3; ++j)
+    if (hidden[i] < whole[j] && !agree.edgesAgree (hidden[i], whole[j]) &&
+        hidden[i] >= kMinVisibleShare * whole[j] && othersAgree (j))
+      return j;
+  return -1;
+}
+
+/** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
+  * of the outline's pixels at least (the larger share if both), 0 if neither.
+  */
+int
+hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
+           const InstanceExtent& box,
+           int i,
+           const pcl::Indices& outline,
+           const pcl::Indices& hidden)
+{
+  const Eigen::Vector3f axis = box.pose.col (i).head<3>();
+  const Eigen::Vector3f centre = box.pose.col (3).head<3>();
+  const float reach = 0.5f * box.size[i] - kEndBand;
+  std::array<std::size_t, 2> at_end = {0, 0}, hidden_at_end = {0, 0};
+  for (const auto p : outline) {
+    const float along =
+        axis.dot (organized[static_cast<std::size_t> (p)].getVector3fMap() - centre);
+    if (std::abs (along) < reach)
+      continue;
+    const std::size_t end = along > 0.0f ? 1 : 0;
+    ++at_end[end];
+    if (std::binary_search (hidden.begin(), hidden.end(), p))
+      ++hidden_at_end[end];
+  }
+  std::array<float, 2> share = {0.0f, 0.0f};
+  for (std::size_t end = 0; end < 2; ++end)
+    if (at_end[end] >= kMinEndPixels)
+      share[end] =
+          static_cast<float> (hidden_at_end[end]) / static_cast<float> (at_end[end]);
+  if (std::max (share[0], share[1]) < kMinHiddenEnd)
+    return 0;
+  return share[1] >= share[0] ? 1 : -1;
+}
+
+/** `box` with its edge `i` lengthened to `length` beyond its end `end` (+1 or -1), its edges
+  * sorted ascending again with its frame's axes (kept right-handed).
+  */
+InstanceExtent
+lengthened (const InstanceExtent& box, int i, float length, int end)
+{
+  InstanceExtent longer = box;
+  longer.pose.col (3).head<3>() += 0.5f * (length - box.size[i]) *
+                                   static_cast<float> (end) *
+                                   box.pose.col (i).head<3>();
+  Eigen::Vector3f size = box.size;
+  size[i] = length;
+  std::array<int, 3> order = {0, 1, 2};
+  std::stable_sort (
+      order.begin(), order.end(), [&size] (int a, int b) { return size[a] < size[b]; });
+  for (int k = 0; k < 3; ++k) {
+    longer.size[k] = size[order[static_cast<std::size_t> (k)]];
+    longer.pose.col (k).head<3>() =
+        box.pose.col (order[static_cast<std::size_t> (k)]).head<3>();
+  }
+  if (longer.pose.topLeftCorner<3, 3>().determinant() < 0.0f)
+    longer.pose.col (2).head<3>() *= -1.0f;
+  return longer;
+}
+
+} // namespace
+
+bool
+completeHiddenCopy (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                    const Eigen::Vector4f& plane,
+                    const Eigen::Vector3f& whole,
+                    const FreeObject& hidden,
+                    const SizeAgreement& agree,
+                    InstanceExtent& completed)
+{
+  const InstanceExtent& box = hidden.extent;
+  if (!(whole.array() > 0.0f).all() || !(box.size.array() > 0.0f).all())
+    return false;
+  const int up = upAxis (box, plane);
+  pcl::Indices outline, hidden_outline;
+  bool outlined = false;
+  for (int i = 0; i < 3; ++i) {
+    const int j = i == up ? -1 : shortenedEdge (whole, box.size, i, agree);
+    if (j < 0)
+      continue;
+    if (!outlined) {
+      if (!occludedOutline (organized,
+                            hidden.pixels,
+                            kOccluderRing,
+                            kOccluderStep,
+                            outline,
+                            hidden_outline))
+        return false;
+      std::sort (hidden_outline.begin(), hidden_outline.end());
+      outlined = true;
+    }
+    if (const int end = hiddenEnd (organized, box, i, outline, hidden_outline);
+        end != 0) {
+      completed = lengthened (box, i, whole[j], end);
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace detail
+} // namespace mid
