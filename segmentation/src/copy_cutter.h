@@ -63,7 +63,8 @@ public:
     * footprint is no rectangle and something in front hides little of its outline: cut by
     * each rectangle that the edges of its outline give (footprintCopySizes()), the object's
     * height the box's third edge (flushCopies()), the first cut into parts that each hold
-    * `min_keypoints`, have no edge shorter than `min_edge`, agree in size with the first part
+    * `min_keypoints`, have no edge shorter than `min_edge` (2 cm at least: the raster's cells
+    * measure a tenth of an edge, 4 mm at most), agree in size with the first part
     * and, at twice the tolerances (the outline's edges are a raster's), with the box, and
     * whose boxes leave room in the rectangle around them on the plane (a long prism cut
     * along its length fills it). None if no cut does.

@@ -16,10 +16,8 @@
 namespace mid {
 namespace detail {
 
-/** \brief The objects on the table that no instance observes, which SizeInstanceSearch
-  * measures: how they grow from the keypoints, which boxes they occupy, and what lies around
-  * them.
-  */
+// The objects on the table that no instance observes, which SizeInstanceSearch measures: how
+// they grow from the keypoints, which boxes they occupy, and what lies around them.
 
 /** \brief How far inside an object's box a found copy's keypoint must lie to rule the object
   * out (metres): touching copies share a face, and their keypoints lie on it.

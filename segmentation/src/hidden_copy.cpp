@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <numeric>
-#include <utility>
 
 namespace mid {
 namespace detail {
@@ -141,7 +139,6 @@ completeHiddenCopy (const pcl::PointCloud<pcl::PointXYZ>& organized,
                             outline,
                             hidden_outline))
         return false;
-      std::sort (hidden_outline.begin(), hidden_outline.end());
       outlined = true;
     }
     if (const int end = hiddenEnd (organized, box, i, outline, hidden_outline);

@@ -13,7 +13,8 @@ namespace detail {
 
 /** \brief Smallest share of two objects' colours that must overlap (colourOverlap()) for two
   * objects that no other agrees with to be copies when their sizes agree only loosely
-  * (groupsOfOneSize()), or when one is partly hidden (completeHiddenCopy()): copies that show
+  * (groupsOfOneSize()), or when one is partly hidden (SizeInstanceSearch's pairing of hidden
+  * copies, completeHiddenCopy()): copies that show
   * different faces still share much of their print's colours. The three loose pairs of copies
   * on the benchmark overlap by 0.53, 0.92 and 0.94, a soy-milk and a juice carton by 0.16, a
   * black and a white mug of a real table by 0.21. The groups of one size overlap by 0.24 to 1

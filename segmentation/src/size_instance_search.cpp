@@ -56,9 +56,9 @@ modelOfSize (const Eigen::Vector3f& size,
   return best;
 }
 
-/** How close (shortest edges of the box) the centres of two boxes of one size lie when they
-  * are one copy: a box with shortest edge e holds a sphere of diameter e around its centre
-  * (InterpenetrationFilter, whose default this is).
+/** How close (shortest edges of the object's box) the centres of two boxes of one size lie
+  * when they are one copy: a box with shortest edge e holds a sphere of diameter e around its
+  * centre (the ratio is InterpenetrationFilter's default, which scales the model's edge).
   */
 constexpr float kSameCopyDistance = 0.8f;
 
@@ -203,7 +203,8 @@ private:
 
 /** An object of no model's size may be copies of one touching each other flush, or hold one
   * joined with something else: the object, or else its parts, join the model of their size.
-  * The model joined, -1 if none.
+  * The model of the object's (or its parts') size, whether they joined it or not (their
+  * keypoints taken, or the model having a copy there already); -1 if none.
   */
 int
 joinModelOrCutIntoCopies (const FreeObject& object,
@@ -295,9 +296,10 @@ discoverModelsOfCopies (const FreeObjects& objects,
   }
 }
 
-/** Two of the `founders` not yet `used`, one a copy of the other's box that something in front
-  * hides in part (completeHiddenCopy()), that look alike (colourOverlap() of
-  * kMinLoosePairColourOverlap at least), make a model: the hidden copy with its box
+/** Two of the `founders` (the objects that may found a model: no shorter edge than the
+  * models', standing alone when asked) not yet `used`, one a copy of the other's box that
+  * something in front hides in part (completeHiddenCopy()), that look alike (colourOverlap()
+  * of kMinLoosePairColourOverlap at least), make a model: the hidden copy with its box
   * completed. Each object takes the first such partner, in the order of `founders`.
   */
 void
@@ -314,16 +316,18 @@ pairHiddenCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
     for (const std::size_t part : founders) {
       if (used[whole] || used[part] || part == whole)
         continue;
-      FreeObject hidden = objects[part];
+      InstanceExtent completed;
       if (!detail::completeHiddenCopy (organized,
                                        plane,
                                        objects[whole].extent.size,
-                                       hidden,
+                                       objects[part],
                                        agree,
-                                       hidden.extent) ||
-          detail::colourOverlap (surface, objects[whole], hidden) <
+                                       completed) ||
+          detail::colourOverlap (surface, objects[whole], objects[part]) <
               detail::kMinLoosePairColourOverlap)
         continue;
+      FreeObject hidden = objects[part];
+      hidden.extent = completed;
       used[whole] = used[part] = true;
       placement.addModelOfCopies ({objects[whole], hidden});
     }
@@ -402,7 +406,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
     return false;
 
   // A copy of a model's size joins it (measured beside the found copies first), unless one of
-  // its keypoints went to another copy already.
+  // its keypoints went to another copy already or the model has a copy there.
   const CopyCutter cutter (organized,
                            plane,
                            *keypoints_,

@@ -677,7 +677,7 @@ TEST (SizeInstanceSearch, FindsTwoCopiesJoinedWithEachOtherByTheirFlatTops)
 namespace {
 
 /** Box 0 lies whole; box 1, of its print and size but `length` long (its 0.12 m edge away from
-  * the camera), lies behind box 2, a wall of another print 0.1 m high, 15 mm before its near
+  * the camera), lies behind box 2, a wall of another print 0.08 m high, 15 mm before its near
   * end (if `hiding`; else 0.3 m aside): seen at 55 deg, the wall hides box 1's near end.
   */
 std::vector<mid::test::BoxSpec>
@@ -686,15 +686,15 @@ oneBehindAWall (double length, bool hiding)
   return {
       restingBox (kApplePrint, -0.15, 0.05, 90.0),
       restingBox (kApplePrint, 0.1, 0.11 - 0.5 * length, 90.0, {length, 0.09, 0.04}),
-      restingBox (kSoyPrint, hiding ? 0.1 : -0.2, -0.05, 0.0, {0.14, 0.05, 0.1})};
+      restingBox (kSoyPrint, hiding ? 0.1 : -0.2, -0.05, 0.0, {0.14, 0.05, 0.08})};
 }
 
 } // namespace
 
 TEST (SizeInstanceSearch, PairsACopyThatSomethingInFrontHidesInPart)
 {
-  // Box 1 measures about 90 mm long, no size of box 0's; its near end is hidden, and its box
-  // completed beyond that end to box 0's length is a copy's, at its true place.
+  // Box 1 measures about 90 of its 120 mm, no size of box 0's; its near end is hidden, and
+  // its box completed beyond that end to box 0's length is a copy's, at its true place.
   const Boxes scene (oneBehindAWall (0.12, true), mid::test::kTableDepth, kViewTilt);
   expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
 
@@ -705,4 +705,18 @@ TEST (SizeInstanceSearch, PairsACopyThatSomethingInFrontHidesInPart)
   const Boxes shorter (oneBehindAWall (0.09, false), mid::test::kTableDepth, kViewTilt);
   EXPECT_TRUE (discoverBySize (discoveringSearchInColour (shorter), found).empty());
   EXPECT_EQ (found, 0u);
+}
+
+TEST (SizeInstanceSearch, PairsACopyHiddenAtEitherEndBesideATallBox)
+{
+  // Seen from above, a box 0.25 m tall between the image centre and a lying copy's inner end
+  // hides that end: on the right of the image its left end, on the left its right end.
+  for (const double side : {1.0, -1.0}) {
+    const Boxes scene (
+        {restingBox (kApplePrint, 0.0, 0.15, 0.0),
+         restingBox (kApplePrint, 0.2 * side, 0.0, 0.0),
+         restingBox (kSoyPrint, 0.1 * side, 0.0, 0.0, {0.05, 0.14, 0.25})});
+    SCOPED_TRACE (side);
+    expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
+  }
 }

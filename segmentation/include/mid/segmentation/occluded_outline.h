@@ -38,7 +38,8 @@ occludedOutlineShare (const pcl::PointCloud<pcl::PointXYZ>& organized,
   *
   * \param[in] organized, pixels, ring, step see occludedOutlineShare()
   * \param[out] outline the outline's pixels (each once, in the order of the frame)
-  * \param[out] hidden those of them that something in front hides
+  * \param[out] hidden those of them that something in front hides (in the order of the
+  * frame)
   * \return false (with a PCL_ERROR, both outputs empty) as occludedOutlineShare()
   */
 bool

@@ -34,7 +34,9 @@ namespace mid {
   *    measured copy alone and which has another measured copy of the object's size
   *    (boxOfSize(): no two of its copies agree, as all but one are joined with a neighbour or
   *    hidden in part, and with the object two do), as a new instance, the objects beside the
-  *    found copies first, none that shares a keypoint with an instance added before. Its
+  *    found copies first, none that shares a keypoint with an instance added before, and
+  *    none where one of the model's instances lies already (its box centre within 0.8
+  *    shortest edges of the object's: the object is that copy seen again). Its
   *    pose is the one that brings the model's box onto the object's, right up to the box's
   *    symmetries (a half turn of a box, a quarter turn of a square one; which face the copy
   *    shows is what is not known); its free keypoints become landmarks of the model, with
@@ -73,12 +75,19 @@ namespace mid {
   *    and nothing in front hides much of its outline (occludedOutlineShare()), the edges of
   *    its outline between right angles give the copies' rectangle (footprintCopySizes()),
   *    the object's height the third edge, and a cut into parts of one size, which do not
-  *    tile a rectangle (rectanglesFill()), makes a model of them.
+  *    tile a rectangle (rectanglesFill()), makes a model of them. Last, two of the objects
+  *    that may found a model and are left, one a copy of the other's box that something in
+  *    front hides at one end (their boxes agree on two edges, its third is 60 % of the
+  *    other's at least, and half of its outline at that end lies beside a nearer point,
+  *    occludedOutline()), whose colours overlap by half (with the frame's chromaticities),
+  *    make a model in the frame of the whole one, the hidden copy's box lengthened beyond
+  *    the hidden end.
   *
   * An object touching another is measured with it and agrees with no model's size, unless
   * the other is a found copy of a measured model, both are copies of one touching flush, or
   * the object shows its flat top beside a box of another height;
-  * an object occluded in part is measured too small: both are left alone. A product of
+  * an object occluded in part is measured too small, and is left alone unless a copy seen
+  * whole that looks like it (step 4) gives it its length. A product of
   * another type that has the same size within the tolerance is taken for a copy, and so are
   * touching boxes of another size whose footprint the model's rectangles tile and whose
   * parts have its size: the step trades those for the copies that show an unmatched face,
