@@ -1,5 +1,7 @@
 #include "copy_cutter.h"
 
+#include "hidden_copy.h"
+
 #include <mid/segmentation/flat_top_parts.h>
 #include <mid/segmentation/footprint_copy_sizes.h>
 #include <mid/segmentation/footprint_split.h>
@@ -275,6 +277,17 @@ CopyCutter::copiesOfItsFlatTops (const FreeObject& object) const
       return kept;
   }
   return {};
+}
+
+FreeObjects
+CopyCutter::hiddenCopy (const FreeObject& object, const Eigen::Vector3f& size) const
+{
+  InstanceExtent completed;
+  if (!completeHiddenCopy (organized_, plane_, size, object, agree_, completed))
+    return {};
+  FreeObject copy = object;
+  copy.extent = completed;
+  return {copy};
 }
 
 } // namespace detail

@@ -92,6 +92,13 @@ public:
   FreeObjects
   copiesOfItsFlatTops (const FreeObject& object) const;
 
+  /** \brief The copy of a box of `size` that `object` is, hidden in part by something in
+    * front (completeHiddenCopy()): the object with its box completed beyond the hidden end.
+    * None otherwise.
+    */
+  FreeObjects
+  hiddenCopy (const FreeObject& object, const Eigen::Vector3f& size) const;
+
 private:
   /** \brief The parts of `object` under the flat tops of a box of `size` (flatTopParts()),
     * each with the object's keypoints whose pixel it holds: those with at least

@@ -1,6 +1,5 @@
 #include "copy_cutter.h"
 #include "free_objects.h"
-#include "hidden_copy.h"
 #include "size_groups.h"
 
 #include <mid/segmentation/instance_extent.h>
@@ -228,8 +227,8 @@ joinModelOrCutIntoCopies (const FreeObject& object,
 }
 
 /** Models of the objects of one size (groupsOfOneSize() of the `founders`), each with the
-  * copies of that size cut from the other `candidates` (flush copies, or one joined with
-  * something else by its flat top); then models of the copies that a candidate left holds,
+  * copies of that size cut from the other `candidates` (flush copies, one joined with
+  * something else by its flat top, or one hidden in part by something in front); then models of the copies that a candidate left holds,
   * joined with each other (by their flat tops) or flush (by its outline). `used` marks the
   * objects whose copies were placed.
   */
@@ -256,7 +255,9 @@ discoverModelsOfCopies (const FreeObjects& objects,
     if (copies.empty())
       continue;
     // A size seen once cuts no group of copies (a box may be two of another), but it finds a
-    // copy whose own top shows in a join with something else.
+    // copy whose own top shows in a join with something else. A size seen twice or more also
+    // takes a copy of it that something in front hides in part and that looks like the first
+    // (seen once, such a pair waits for pairHiddenCopies(), after the cuts below).
     const bool seen_once = copies.size() < 2;
     const Eigen::Vector3f size = copies.front().extent.size;
     for (const std::size_t o : candidates) {
@@ -270,6 +271,10 @@ discoverModelsOfCopies (const FreeObjects& objects,
             parts.push_back (part);
       if (parts.size() < 2)
         parts = cutter.copyByItsFlatTop (objects[o], size);
+      if (parts.empty() && !seen_once &&
+          detail::colourOverlap (surface, copies.front(), objects[o]) >=
+              detail::kMinLoosePairColourOverlap)
+        parts = cutter.hiddenCopy (objects[o], size);
       if (parts.empty())
         continue;
       sources.push_back (o);
@@ -298,16 +303,15 @@ discoverModelsOfCopies (const FreeObjects& objects,
 
 /** Two of the `founders` (the objects that may found a model: no shorter edge than the
   * models', standing alone when asked) not yet `used`, one a copy of the other's box that
-  * something in front hides in part (completeHiddenCopy()), that look alike (colourOverlap()
-  * of kMinLoosePairColourOverlap at least), make a model: the hidden copy with its box
-  * completed. Each object takes the first such partner, in the order of `founders`.
+  * something in front hides in part (CopyCutter::hiddenCopy()), that look alike
+  * (colourOverlap() of kMinLoosePairColourOverlap at least), make a model: the hidden copy
+  * with its box completed. Each object takes the first such partner, in the order of
+  * `founders`.
   */
 void
-pairHiddenCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                  const Eigen::Vector4f& plane,
-                  const FreeObjects& objects,
+pairHiddenCopies (const FreeObjects& objects,
                   const std::vector<std::size_t>& founders,
-                  const SizeAgreement& agree,
+                  const CopyCutter& cutter,
                   const KeypointSurface& surface,
                   CopyPlacement& placement,
                   std::vector<bool>& used)
@@ -316,20 +320,14 @@ pairHiddenCopies (const pcl::PointCloud<pcl::PointXYZ>& organized,
     for (const std::size_t part : founders) {
       if (used[whole] || used[part] || part == whole)
         continue;
-      InstanceExtent completed;
-      if (!detail::completeHiddenCopy (organized,
-                                       plane,
-                                       objects[whole].extent.size,
-                                       objects[part],
-                                       agree,
-                                       completed) ||
+      const FreeObjects hidden =
+          cutter.hiddenCopy (objects[part], objects[whole].extent.size);
+      if (hidden.empty() ||
           detail::colourOverlap (surface, objects[whole], objects[part]) <
               detail::kMinLoosePairColourOverlap)
         continue;
-      FreeObject hidden = objects[part];
-      hidden.extent = completed;
       used[whole] = used[part] = true;
-      placement.addModelOfCopies ({objects[whole], hidden});
+      placement.addModelOfCopies ({objects[whole], hidden.front()});
     }
 }
 
@@ -448,8 +446,7 @@ SizeInstanceSearch::search (ObjectModels& models, std::size_t& found) const
                           min_keypoints_,
                           placement,
                           used);
-  pairHiddenCopies (
-      organized, plane, free_objects, founders, agree, surface_, placement, used);
+  pairHiddenCopies (free_objects, founders, cutter, surface_, placement, used);
   // An object that is no rectangle has a box that may reach around a found copy: its parts'
   // boxes must not.
   for (const FreeObject& object : boxing_found) {

@@ -707,6 +707,19 @@ TEST (SizeInstanceSearch, PairsACopyThatSomethingInFrontHidesInPart)
   EXPECT_EQ (found, 0u);
 }
 
+TEST (SizeInstanceSearch, AGroupOfOneSizeTakesACopyHiddenInPart)
+{
+  // Boxes 0 and 3 lie whole and agree on their size: their group takes box 1, hidden in part
+  // behind the wall, with its box completed.
+  std::vector<mid::test::BoxSpec> boxes = oneBehindAWall (0.12, true);
+  boxes.push_back (restingBox (kApplePrint, -0.15, 0.25, 90.0));
+  const Boxes scene (boxes, mid::test::kTableDepth, kViewTilt);
+  expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1, 3});
+
+  // In other colours, box 1 is left out of the group.
+  expectOneModelOfBoxes (scene, discoveringSearchInColour (scene, 1), {0, 3});
+}
+
 TEST (SizeInstanceSearch, PairsACopyHiddenAtEitherEndBesideATallBox)
 {
   // Seen from above, a box 0.25 m tall between the image centre and a lying copy's inner end
