@@ -228,9 +228,9 @@ joinModelOrCutIntoCopies (const FreeObject& object,
 
 /** Models of the objects of one size (groupsOfOneSize() of the `founders`), each with the
   * copies of that size cut from the other `candidates` (flush copies, one joined with
-  * something else by its flat top, or one hidden in part by something in front); then models of the copies that a candidate left holds,
-  * joined with each other (by their flat tops) or flush (by its outline). `used` marks the
-  * objects whose copies were placed.
+  * something else by its flat top, or one hidden in part by something in front); then models
+  * of the copies that a candidate left holds, joined with each other (by their flat tops) or
+  * flush (by its outline). `used` marks the objects whose copies were placed.
   */
 void
 discoverModelsOfCopies (const FreeObjects& objects,

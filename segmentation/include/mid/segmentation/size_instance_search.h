@@ -65,12 +65,15 @@ namespace mid {
   *    lying flush) is too common. But a group, even of one object, takes a copy of its size
   *    that an object of no model's size holds, joined with a box of another height, whose
   *    flat top shows at the copy's height (flatTopParts(); the part under it, measured on
-  *    its own, has the size; the rest of that object is not looked at again). What is left
-  *    may be copies of one box joined with each other, none seen alone. With their tops at the
-  *    heights of different edges (one standing, one lying), each top suggests a box
-  *    (flatTopSizes()), and when two or more of the parts under the tops of one suggestion
-  *    (flatTopParts()), measured on their own, agree in size (a keypoint two hold is
-  *    neither's), they make a model (or join the model of their size). With their tops at one
+  *    its own, has the size; the rest of that object is not looked at again), and a group
+  *    of two or more takes an object that is a copy of its size hidden in part by something
+  *    in front (as below) and whose colours overlap its first copy's by half, its box
+  *    completed. What is left may be copies of one box joined with each other, none seen
+  *    alone. With their tops at the heights of different edges (one standing, one lying),
+  *    each top suggests a box (flatTopSizes()), and when two or more of the parts under the
+  *    tops of one suggestion (flatTopParts()), measured on their own, agree in size (a
+  *    keypoint two hold is neither's), they make a model (or join the model of their size).
+  *    With their tops at one
   *    height: when the object's footprint is no rectangle (no one box could have made it)
   *    and nothing in front hides much of its outline (occludedOutlineShare()), the edges of
   *    its outline between right angles give the copies' rectangle (footprintCopySizes()),
