@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace mid {
@@ -53,7 +54,8 @@ shortenedEdge (const Eigen::Vector3f& whole,
 }
 
 /** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
-  * of the outline's pixels at least (the larger share if both), 0 if neither.
+  * of the outline's pixels at least (the larger share if both), 0 if neither. `hidden` is
+  * sorted (occludedOutline() lists in the frame's order).
   */
 int
 hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
