@@ -13,7 +13,9 @@ namespace mid {
 namespace {
 
 /** The boxes of one size in models a and b (box frame -> model frame): a's size and a box of
-  * it in b, or else b's size and a box of it in a; false if neither model holds the other's.
+  * it in b, or else b's size and a box of it in a, or else, if `pair_agrees` (two measured
+  * copies are enough for a size), the boxes of a copy of each that have one size (the first
+  * of a's copies that has a size of b's copies); false if none.
   */
 bool
 boxesOfOneSize (const ObjectModel& a,
@@ -23,6 +25,7 @@ boxesOfOneSize (const ObjectModel& a,
                 const InstanceExtents& extents_a,
                 const InstanceExtents& extents_b,
                 const SizeAgreement& agree,
+                bool pair_agrees,
                 Eigen::Matrix4f& box_in_a,
                 Eigen::Matrix4f& box_in_b)
 {
@@ -34,6 +37,13 @@ boxesOfOneSize (const ObjectModel& a,
     box_in_b = size_b.box_in_model;
     return true;
   }
+  if (!pair_agrees)
+    return false;
+  for (const std::size_t i : measuredInstances (extents_a))
+    if (boxOfSize (extents_a[i].size, ModelSize(), b, extents_b, agree, box_in_b)) {
+      box_in_a = a.instances[i].pose.inverse() * extents_a[i].pose;
+      return true;
+    }
   return false;
 }
 
@@ -69,6 +79,7 @@ ModelSizeMerger::merge (ObjectModels& models) const
                            extents[a],
                            extents[b],
                            agree,
+                           min_agreeing_ <= 2,
                            box_in_a,
                            box_in_b)) {
         ++b;

@@ -302,6 +302,52 @@ TEST (ModelSizeMerger, MergesAModelOneOfWhoseCopiesHasTheOthersSize)
   EXPECT_EQ (posed, 3);
 }
 
+TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
+{
+  // Boxes 0 and 2 have one size; box 1 and box 3 are smaller, each in its own way. Each model
+  // takes the size of its smaller surface (box 1's, box 3's), which neither the other model's
+  // size nor any of its copies has: the two agree only through box 0 and box 2.
+  const Boxes scene ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
+                      restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.1, 0.07, 0.04}),
+                      restingBox (kSoyPrint, -0.1, 0.13, 20.0),
+                      restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.055, 0.04})});
+  const Eigen::Isometry3f other_frame =
+      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
+      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
+  mid::ObjectModels models = {scene.modelOf ({0, 1}),
+                              scene.modelOf ({2, 3}, other_frame)};
+  ASSERT_TRUE (mergerFor (scene).merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
+  int posed = 0;
+  for (const auto& instance : models[0].instances) {
+    const int b = scene.boxOf (instance.keypoints);
+    ASSERT_GE (b, 0);
+    if (b == 0 || b == 2) {
+      ++posed;
+      expectBoxPose (scene, instance, b);
+    }
+  }
+  EXPECT_EQ (posed, 2);
+
+  // Asked for three copies agreeing on a size, the two are not enough.
+  models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3}, other_frame)};
+  mid::ModelSizeMerger strict = mergerFor (scene);
+  strict.setMinAgreeing (3);
+  ASSERT_TRUE (strict.merge (models));
+  EXPECT_EQ (models.size(), 2u);
+
+  // Box 2 of the smaller size of box 3: no copy of the second model has a size of the first.
+  const Boxes apart ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
+                      restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.1, 0.07, 0.04}),
+                      restingBox (kSoyPrint, -0.1, 0.13, 20.0, {0.1, 0.055, 0.04}),
+                      restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.055, 0.04})});
+  models = {apart.modelOf ({0, 1}), apart.modelOf ({2, 3}, other_frame)};
+  ASSERT_TRUE (mergerFor (apart).merge (models));
+  EXPECT_EQ (models.size(), 2u);
+}
+
 TEST (InstanceExtent, RefusesPixelsOutsideTheFrameOrWithoutAPoint)
 {
   const Boxes scene (fourBoxes());
