@@ -9,10 +9,12 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <vector>
 
 namespace {
 
@@ -45,6 +47,38 @@ expectBoxPose (const Boxes& scene, const mid::ModelInstance& instance, int b)
       (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>()).norm(),
       0.004f)
       << "box " << b;
+}
+
+/** The models of boxes {0, 1} and {2, 3}, the second in a model frame of its own. */
+mid::ObjectModels
+twoModels (const Boxes& scene)
+{
+  const Eigen::Isometry3f other_frame =
+      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
+      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
+  return {scene.modelOf ({0, 1}), scene.modelOf ({2, 3}, other_frame)};
+}
+
+/** twoModels() merge into one model of four instances in box 0's frame, in which the boxes
+  * `posed` are at their true poses up to the box's symmetries (expectBoxPose()).
+  */
+void
+expectMergedWithPosed (const Boxes& scene, const std::vector<int>& posed)
+{
+  mid::ObjectModels models = twoModels (scene);
+  ASSERT_TRUE (mergerFor (scene).merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  std::size_t checked = 0;
+  for (const auto& instance : models[0].instances) {
+    const int b = scene.boxOf (instance.keypoints);
+    ASSERT_GE (b, 0);
+    if (std::find (posed.begin(), posed.end(), b) != posed.end()) {
+      ++checked;
+      expectBoxPose (scene, instance, b);
+    }
+  }
+  EXPECT_EQ (checked, posed.size());
 }
 
 TEST (InstanceExtent, MeasuresABoxRestingOnTheTable)
@@ -164,24 +198,14 @@ TEST (InstanceExtent, StopsAtTheCreaseWhereTwoObjectsMeet)
 TEST (ModelSizeMerger, MergesTwoModelsOfOneBoxSizeIntoTheBoxFrame)
 {
   const Boxes scene (fourBoxes());
-  const Eigen::Isometry3f other_frame =
-      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
-      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
-  mid::ObjectModels models = {scene.modelOf ({0, 1}),
-                              scene.modelOf ({2, 3}, other_frame)};
-  const std::size_t landmarks = models[0].landmarks.size() + models[1].landmarks.size();
-
-  ASSERT_TRUE (mergerFor (scene).merge (models));
-  ASSERT_EQ (models.size(), 1u);
-  ASSERT_EQ (models[0].instances.size(), 4u);
-  EXPECT_EQ (models[0].landmarks.size(), landmarks);
   // The merged model keeps box 0's frame: every instance's pose is its box's true pose, up to
   // the box's symmetries.
-  for (const auto& instance : models[0].instances) {
-    const int b = scene.boxOf (instance.keypoints);
-    ASSERT_GE (b, 0);
-    expectBoxPose (scene, instance, b);
-  }
+  expectMergedWithPosed (scene, {0, 1, 2, 3});
+  mid::ObjectModels models = twoModels (scene);
+  const std::size_t landmarks = models[0].landmarks.size() + models[1].landmarks.size();
+  ASSERT_TRUE (mergerFor (scene).merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models[0].landmarks.size(), landmarks);
 }
 
 TEST (ModelSizeMerger, KeepsModelsOfDifferentSizesApart)
@@ -281,25 +305,8 @@ TEST (ModelSizeMerger, MergesAModelOneOfWhoseCopiesHasTheOthersSize)
                       restingBox (kApplePrint, 0.16, -0.12, -35.0),
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0),
                       restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.07, 0.04})});
-  const Eigen::Isometry3f other_frame =
-      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
-      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
-  mid::ObjectModels models = {scene.modelOf ({0, 1}),
-                              scene.modelOf ({2, 3}, other_frame)};
-  ASSERT_TRUE (mergerFor (scene).merge (models));
-  ASSERT_EQ (models.size(), 1u);
-  ASSERT_EQ (models[0].instances.size(), 4u);
   // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
-  int posed = 0;
-  for (const auto& instance : models[0].instances) {
-    const int b = scene.boxOf (instance.keypoints);
-    ASSERT_GE (b, 0);
-    if (b == 3)
-      continue;
-    ++posed;
-    expectBoxPose (scene, instance, b);
-  }
-  EXPECT_EQ (posed, 3);
+  expectMergedWithPosed (scene, {0, 1, 2});
 }
 
 TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
@@ -311,28 +318,11 @@ TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
                       restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.1, 0.07, 0.04}),
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0),
                       restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.055, 0.04})});
-  const Eigen::Isometry3f other_frame =
-      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
-      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
-  mid::ObjectModels models = {scene.modelOf ({0, 1}),
-                              scene.modelOf ({2, 3}, other_frame)};
-  ASSERT_TRUE (mergerFor (scene).merge (models));
-  ASSERT_EQ (models.size(), 1u);
-  ASSERT_EQ (models[0].instances.size(), 4u);
   // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
-  int posed = 0;
-  for (const auto& instance : models[0].instances) {
-    const int b = scene.boxOf (instance.keypoints);
-    ASSERT_GE (b, 0);
-    if (b == 0 || b == 2) {
-      ++posed;
-      expectBoxPose (scene, instance, b);
-    }
-  }
-  EXPECT_EQ (posed, 2);
+  expectMergedWithPosed (scene, {0, 2});
 
   // Asked for three copies agreeing on a size, the two are not enough.
-  models = {scene.modelOf ({0, 1}), scene.modelOf ({2, 3}, other_frame)};
+  mid::ObjectModels models = twoModels (scene);
   mid::ModelSizeMerger strict = mergerFor (scene);
   strict.setMinAgreeing (3);
   ASSERT_TRUE (strict.merge (models));
@@ -343,7 +333,7 @@ TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
                       restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.1, 0.07, 0.04}),
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0, {0.1, 0.055, 0.04}),
                       restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.055, 0.04})});
-  models = {apart.modelOf ({0, 1}), apart.modelOf ({2, 3}, other_frame)};
+  models = twoModels (apart);
   ASSERT_TRUE (mergerFor (apart).merge (models));
   EXPECT_EQ (models.size(), 2u);
 }
