@@ -12,10 +12,10 @@ namespace mid {
 
 namespace {
 
-/** The boxes of one size in models a and b (box frame -> model frame): a's size and a box of
-  * it in b, or else b's size and a box of it in a, or else, if `pair_agrees` (two measured
-  * copies are enough for a size), the boxes of a copy of each that have one size (the first
-  * of a's copies that has a size of b's copies); false if none.
+/** The boxes of one size in models a and b (box frame -> model frame) and that size: a's size
+  * and a box of it in b, or else b's size and a box of it in a, or else, if `pair_agrees` (two
+  * measured copies are enough for a size), the boxes of a copy of each that have one size (the
+  * first of a's copies that has a size of b's copies), and that copy's size; false if none.
   */
 bool
 boxesOfOneSize (const ObjectModel& a,
@@ -27,14 +27,17 @@ boxesOfOneSize (const ObjectModel& a,
                 const SizeAgreement& agree,
                 bool pair_agrees,
                 Eigen::Matrix4f& box_in_a,
-                Eigen::Matrix4f& box_in_b)
+                Eigen::Matrix4f& box_in_b,
+                Eigen::Vector3f& size)
 {
   if (size_a.valid && boxOfSize (size_a.size, size_b, b, extents_b, agree, box_in_b)) {
     box_in_a = size_a.box_in_model;
+    size = size_a.size;
     return true;
   }
   if (size_b.valid && boxOfSize (size_b.size, size_a, a, extents_a, agree, box_in_a)) {
     box_in_b = size_b.box_in_model;
+    size = size_b.size;
     return true;
   }
   if (!pair_agrees)
@@ -42,6 +45,7 @@ boxesOfOneSize (const ObjectModel& a,
   for (const std::size_t i : measuredInstances (extents_a))
     if (boxOfSize (extents_a[i].size, ModelSize(), b, extents_b, agree, box_in_b)) {
       box_in_a = a.instances[i].pose.inverse() * extents_a[i].pose;
+      size = extents_a[i].size;
       return true;
     }
   return false;
@@ -72,6 +76,7 @@ ModelSizeMerger::merge (ObjectModels& models) const
   for (std::size_t a = 0; a < models.size(); ++a) {
     for (std::size_t b = a + 1; b < models.size();) {
       Eigen::Matrix4f box_in_a, box_in_b;
+      Eigen::Vector3f size;
       if (!boxesOfOneSize (models[a],
                            models[b],
                            sizes[a],
@@ -81,7 +86,8 @@ ModelSizeMerger::merge (ObjectModels& models) const
                            agree,
                            min_agreeing_ <= 2,
                            box_in_a,
-                           box_in_b)) {
+                           box_in_b,
+                           size)) {
         ++b;
         continue;
       }
@@ -92,7 +98,7 @@ ModelSizeMerger::merge (ObjectModels& models) const
       }
       if (!sizes[a].valid) { // the size the two agree on, in a's frame
         sizes[a].valid = true;
-        sizes[a].size = sizes[b].size;
+        sizes[a].size = size;
         sizes[a].box_in_model = box_in_a;
       }
       // One box frame in both models: x_b = box_in_b * box_in_a^-1 * x_a.

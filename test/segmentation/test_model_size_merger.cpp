@@ -200,7 +200,7 @@ TEST (ModelSizeMerger, MergesTwoModelsOfOneBoxSizeIntoTheBoxFrame)
   const Boxes scene (fourBoxes());
   // The merged model keeps box 0's frame: every instance's pose is its box's true pose, up to
   // the box's symmetries.
-  expectMergedWithPosed (scene, {0, 1, 2, 3});
+  ASSERT_NO_FATAL_FAILURE (expectMergedWithPosed (scene, {0, 1, 2, 3}));
   mid::ObjectModels models = twoModels (scene);
   const std::size_t landmarks = models[0].landmarks.size() + models[1].landmarks.size();
   ASSERT_TRUE (mergerFor (scene).merge (models));
@@ -306,7 +306,7 @@ TEST (ModelSizeMerger, MergesAModelOneOfWhoseCopiesHasTheOthersSize)
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0),
                       restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.07, 0.04})});
   // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
-  expectMergedWithPosed (scene, {0, 1, 2});
+  ASSERT_NO_FATAL_FAILURE (expectMergedWithPosed (scene, {0, 1, 2}));
 }
 
 TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
@@ -319,16 +319,37 @@ TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0),
                       restingBox (kSoyPrint, 0.17, 0.12, 60.0, {0.1, 0.055, 0.04})});
   // Box 2 is posed in box 0's frame by its own box: its true pose, up to the box's symmetries.
-  expectMergedWithPosed (scene, {0, 2});
+  ASSERT_NO_FATAL_FAILURE (expectMergedWithPosed (scene, {0, 2}));
 
-  // Asked for three copies agreeing on a size, the two are not enough.
-  mid::ObjectModels models = twoModels (scene);
+  // Asked for two copies agreeing on a size, the pair is enough; asked for three, it is not.
   mid::ModelSizeMerger strict = mergerFor (scene);
-  strict.setMinAgreeing (3);
-  ASSERT_TRUE (strict.merge (models));
-  EXPECT_EQ (models.size(), 2u);
+  for (const int min_agreeing : {2, 3}) {
+    mid::ObjectModels models = twoModels (scene);
+    strict.setMinAgreeing (min_agreeing);
+    ASSERT_TRUE (strict.merge (models));
+    EXPECT_EQ (models.size(), min_agreeing == 2 ? 1u : 2u)
+        << "min_agreeing " << min_agreeing;
+  }
 
-  // Box 2 of the smaller size of box 3: no copy of the second model has a size of the first.
+  // With two copies asked, neither model has a size, and the merged one takes the pair's (box
+  // 0's): a third model, of two copies of that size, joins it by that size.
+  std::vector<mid::test::BoxSpec> six = scene.scene.boxes;
+  six.push_back (restingBox (kApplePrint, 0.0, 0.0, 45.0));
+  six.push_back (restingBox (kSoyPrint, 0.33, 0.0, 0.0));
+  const Boxes three_models (six);
+  mid::ObjectModels models = twoModels (three_models);
+  models.push_back (three_models.modelOf (
+      {4, 5},
+      Eigen::Translation3f (-0.03f, 0.02f, 0.01f) *
+          Eigen::AngleAxisf (-1.1f, Eigen::Vector3f (0.3f, 1.0f, 2.0f).normalized())));
+  mid::ModelSizeMerger pairs = mergerFor (three_models);
+  pairs.setMinAgreeing (2);
+  ASSERT_TRUE (pairs.merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models[0].instances.size(), 6u);
+
+  // Box 2 of the smaller size of box 3: no copy of the second model has the size of any copy
+  // of the first.
   const Boxes apart ({restingBox (kApplePrint, -0.16, -0.1, 10.0),
                       restingBox (kApplePrint, 0.16, -0.12, -35.0, {0.1, 0.07, 0.04}),
                       restingBox (kSoyPrint, -0.1, 0.13, 20.0, {0.1, 0.055, 0.04}),

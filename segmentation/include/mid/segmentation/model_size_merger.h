@@ -29,9 +29,11 @@ namespace mid {
   *    A model whose size disagrees is still merged when one of its measured copies has the
   *    other model's size (the box of that copy then gives the transform): with two copies,
   *    one joined with a neighbour or partly hidden, a model takes the size of the smaller
-  *    surface, which is often the hidden one's. When both models took such a size, a copy of
-  *    each that has one size merges them (their two boxes give the transform), unless more
-  *    than two copies must agree on a size (`min_agreeing`).
+  *    surface, which is often the hidden one's. When neither model's size is found among the
+  *    other's copies (both models took such a size, say), a copy of each that has one size
+  *    merges them (their two boxes give the transform), unless more than two copies must
+  *    agree on a size (`min_agreeing`). A merged model merges on by its size alone, so a
+  *    third model of the product may stay apart where only such a pair of copies links it.
   *
   * Two products of one size (within the tolerance) are merged too: the step trades those for
   * the second models of one product, which are far more common on a table of several copies
