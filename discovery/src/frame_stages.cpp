@@ -1,0 +1,297 @@
+#include "frame_stages.h"
+
+#include "model_stages.h"
+#include "stage_tools.h"
+
+#include <mid/registration/model_refinement.h>
+#include <mid/registration/observation_pruning.h>
+#include <mid/segmentation/frame_pinhole.h>
+#include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/interpenetration_filter.h>
+#include <mid/segmentation/model_box_extension.h>
+#include <mid/segmentation/model_size_merger.h>
+#include <mid/segmentation/model_size_splitter.h>
+#include <mid/segmentation/photometric_verification.h>
+#include <mid/segmentation/repeated_print_filter.h>
+#include <mid/segmentation/size_instance_search.h>
+#include <mid/segmentation/surface_pose_refinement.h>
+
+#include <pcl/common/io.h>
+#include <pcl/common/time.h>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace mid {
+
+namespace detail {
+
+namespace {
+
+/** `frame` with the pixel of each of the result's keypoints. */
+KeypointSurface
+withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
+{
+  KeypointSurface keypoint_surface = frame;
+  keypoint_surface.keypoint_pixels.clear();
+  for (const auto& k : result.image_keypoints)
+    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+  return keypoint_surface;
+}
+
+/** Give a step that measures boxes on the table the frame's keypoints, their pixels in the
+  * organized frame (which `frame` must hold) and the frame's support plane (fitted here on first
+  * use).
+  */
+void
+setUpPlaneMeasurement (const KeypointSurface& frame,
+                       const DiscoveryResult& result,
+                       FramePlane& plane,
+                       SupportPlaneMeasurement& measurement)
+{
+  measurement.setInputKeypoints (result.keypoints);
+  measurement.setKeypointSurface (withKeypointPixels (frame, result));
+  if (!plane.fitted) {
+    fitSupportPlane (
+        *frame.organized, kDefaultPlaneTolerance, kMinSupportPlaneShare, plane.plane);
+    plane.fitted = true;
+  }
+  measurement.setPlaneTolerance (kDefaultPlaneTolerance);
+  measurement.setSupportPlane (plane.plane);
+}
+
+/** setUpPlaneMeasurement(), and the size tolerances of a step that compares box sizes. */
+void
+setUpBoxMeasurement (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     const DiscoveryResult& result,
+                     FramePlane& plane,
+                     ModelSizeMeasurement& measurement)
+{
+  setUpPlaneMeasurement (frame, result, plane, measurement);
+  measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
+}
+
+} // namespace
+
+KeypointSurface
+frameSurface (const DiscoveryParameters& p,
+              const pcl::PointCloud<pcl::PointXYZRGB>::ConstPtr& organized)
+{
+  KeypointSurface frame;
+  if (!organized)
+    return frame;
+  auto points = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (*organized, *points);
+  frame.organized = points;
+  if (!p.verify_clusters && !p.verify_joins && !p.guided_search && !p.patch_discovery &&
+      !p.split_by_appearance && !p.surface_refinement)
+    return frame;
+  frame.intensity =
+      std::make_shared<const std::vector<float>> (greyLevels (*organized));
+  frame.chromaticity =
+      std::make_shared<const std::vector<Chromaticity>> (chromaticities (*organized));
+  FramePinhole pinhole;
+  if (fitFramePinhole (*points, pinhole))
+    frame.pinhole = std::make_shared<const FramePinhole> (pinhole);
+  else
+    PCL_WARN (
+        "[mid::discoverFromKeypoints] No pinhole camera fits the organized frame "
+        "(not in its camera's coordinates?): no cluster verification, look check "
+        "of what joins a model, guided instance search, patches, appearance split "
+        "or surface refinement.\n");
+  return frame;
+}
+
+bool
+refineOnSurface (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.surface_refinement && frame.organized && frame.pinhole) {
+    SurfacePoseRefinement refinement;
+    refinement.setInputKeypoints (result.keypoints);
+    refinement.setKeypointSurface (frame);
+    refinement.setSampleStep (p.surface_sample_step);
+    refinement.setMaxCorrespondenceDistance (p.surface_max_distance);
+    refinement.setSurfaceWeight (p.surface_weight);
+    refinement.setMaxIterations (p.surface_iterations);
+    for (auto& model : result.models)
+      if (!refinement.refine (model))
+        return false;
+  }
+  result.timing_ms.emplace_back ("surface", watch.getTime());
+  return true;
+}
+
+bool
+searchFromBoxes (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 FramePlane& plane,
+                 DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  const KeypointSurface keypoint_surface = withKeypointPixels (frame, result);
+  if (p.box_search && p.guided_search && frame.organized &&
+      canSearchGuided (keypoint_surface, result) && !result.models.empty()) {
+    ModelBoxExtender extender;
+    setUpBoxMeasurement (p, frame, result, plane, extender);
+    extender.setInputDescriptors (result.descriptors);
+    extender.setMargin (p.box_search_margin);
+    ModelExtension extension;
+    if (!extender.extend (result.models, extension))
+      return false;
+    const bool extended =
+        std::any_of (extension.observations.begin(),
+                     extension.observations.end(),
+                     [] (const auto& added) { return !added.empty(); });
+    if (extended) {
+      // The copies of an object with a box stand off the table: the table's keypoints (a
+      // printed sheet lying on it) are no candidates.
+      std::vector<bool> on_table (result.keypoints->size(), false);
+      for (std::size_t k = 0; k < on_table.size(); ++k)
+        on_table[k] = std::abs (planeDistance (
+                          plane.plane, (*result.keypoints)[k].getVector3fMap())) <=
+                      extender.getPlaneTolerance();
+      DiscoveryParameters search = p;
+      search.guided_hypotheses = p.box_search_hypotheses;
+      if (!searchGuidedInstances (search, keypoint_surface, result, on_table) ||
+          !retractModelExtension (extension, result.models))
+        return false;
+      // The search refined the models with the added observations in.
+      for (auto& model : result.models)
+        for (auto& instance : model.instances)
+          updateInstanceError (model, *result.keypoints, instance);
+      if (p.resolve_overlaps)
+        resolveOverlaps (p, *result.keypoints, result.models);
+    }
+  }
+  result.timing_ms.emplace_back ("box_search", watch.getTime());
+  return true;
+}
+
+bool
+splitBySize (const DiscoveryParameters& p,
+             const KeypointSurface& frame,
+             FramePlane& plane,
+             DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.split_by_size && frame.organized) {
+    ModelSizeSplitter splitter;
+    setUpBoxMeasurement (p, frame, result, plane, splitter);
+    std::size_t added = 0;
+    if (!splitter.split (result.models, added))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_split", watch.getTime());
+  return true;
+}
+
+bool
+mergeBySize (const DiscoveryParameters& p,
+             const KeypointSurface& frame,
+             FramePlane& plane,
+             DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.merge_by_size && frame.organized) {
+    ModelSizeMerger merger;
+    setUpBoxMeasurement (p, frame, result, plane, merger);
+    merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+    if (!merger.merge (result.models))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_merge", watch.getTime());
+  return true;
+}
+
+bool
+removeRepeatedPrints (const DiscoveryParameters& p,
+                      const KeypointSurface& frame,
+                      FramePlane& plane,
+                      DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_repeated_prints && frame.organized) {
+    RepeatedPrintFilter filter;
+    setUpPlaneMeasurement (frame, result, plane, filter);
+    filter.setMaxRotation (p.repeated_print_max_rotation);
+    filter.setMaxShiftRatio (p.repeated_print_max_shift);
+    filter.setMaxShiftAlongWidth (p.repeated_print_max_shift_along);
+    filter.setMinInsideShare (p.repeated_print_min_inside);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("repeated_prints", watch.getTime());
+  return true;
+}
+
+bool
+searchBySize (const DiscoveryParameters& p,
+              const KeypointSurface& frame,
+              FramePlane& plane,
+              DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.size_search && frame.organized) {
+    SizeInstanceSearch search;
+    setUpBoxMeasurement (p, frame, result, plane, search);
+    search.setInputDescriptors (result.descriptors);
+    search.setMinAgreeing (p.size_search_min_agreeing);
+    search.setMinKeypoints (p.size_search_min_keypoints);
+    search.setDiscoverModels (p.size_discovery);
+    search.setMaxSurroundedShare (p.size_discovery_max_surrounded);
+    search.setMinModelEdge (p.size_discovery_min_edge);
+    std::size_t found = 0;
+    if (!search.search (result.models, found))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_search", watch.getTime());
+  return true;
+}
+
+bool
+removeInterpenetrating (const DiscoveryParameters& p,
+                        const KeypointSurface& frame,
+                        FramePlane& plane,
+                        DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_interpenetrating && frame.organized) {
+    InterpenetrationFilter filter;
+    setUpBoxMeasurement (p, frame, result, plane, filter);
+    filter.setMaxCentreDistance (p.interpenetration_max_centre_distance);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("interpenetration", watch.getTime());
+  return true;
+}
+
+bool
+pruneObservations (const DiscoveryParameters& p, DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.prune_observations)
+    for (auto& model : result.models) {
+      std::size_t dropped = 0;
+      if (!pruneUnexplainedObservations (*result.keypoints,
+                                         p.observation_max_residual,
+                                         p.observation_box_margin,
+                                         model,
+                                         dropped))
+        return false;
+    }
+  result.timing_ms.emplace_back ("observations", watch.getTime());
+  return true;
+}
+
+} // namespace detail
+
+} // namespace mid
