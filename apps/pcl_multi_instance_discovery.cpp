@@ -276,6 +276,10 @@ printHelp (const char* program)
       "on the\n");
   print_info ("                      table (the paper's behaviour)\n");
   print_info (
+      "  -keep_outside_box   keep the observations outside the box a model's copies "
+      "occupy\n");
+  print_info ("                      on the table (the paper's behaviour)\n");
+  print_info (
       "  -keep_repeated_prints  keep the instances of a model that lie on one object "
       "with\n");
   print_info (
@@ -351,6 +355,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_size_merge", 0},
                                       {"-size_tol", 1},
                                       {"-size_rel_tol", 1},
+                                      {"-keep_outside_box", 0},
                                       {"-keep_repeated_prints", 0},
                                       {"-repeat_rot", 1},
                                       {"-repeat_shift", 1},
@@ -457,6 +462,7 @@ parseOptions (int argc, char** argv, Options& options)
   p.surface_refinement = !pcl::console::find_switch (argc, argv, "-no_surface");
   p.split_by_size = !pcl::console::find_switch (argc, argv, "-no_size_split");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
+  p.prune_outside_box = !pcl::console::find_switch (argc, argv, "-keep_outside_box");
   p.remove_repeated_prints =
       !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");
   p.prune_observations = !pcl::console::find_switch (argc, argv, "-keep_unexplained");

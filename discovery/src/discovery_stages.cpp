@@ -211,6 +211,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
       detail::refineOnSurface (p, frame, result) &&
       detail::splitBySize (p, frame, plane, result) &&
       detail::mergeBySize (p, frame, plane, result) &&
+      detail::pruneOutsideBoxes (p, frame, plane, result) &&
       detail::removeRepeatedPrints (p, frame, plane, result) &&
       detail::searchBySize (p, frame, plane, result) &&
       detail::removeInterpenetrating (p, frame, plane, result) &&

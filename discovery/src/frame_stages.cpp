@@ -9,6 +9,7 @@
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/interpenetration_filter.h>
 #include <mid/segmentation/model_box_extension.h>
+#include <mid/segmentation/model_box_pruning.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/model_size_splitter.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -205,7 +206,27 @@ mergeBySize (const DiscoveryParameters& p,
     if (!merger.merge (result.models))
       return false;
   }
+
   result.timing_ms.emplace_back ("size_merge", watch.getTime());
+  return true;
+}
+
+bool
+pruneOutsideBoxes (const DiscoveryParameters& p,
+                   const KeypointSurface& frame,
+                   FramePlane& plane,
+                   DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.prune_outside_box && frame.organized) {
+    ModelBoxPruning pruning;
+    setUpBoxMeasurement (p, frame, result, plane, pruning);
+    pruning.setMargin (p.observation_box_margin);
+    std::size_t dropped = 0;
+    if (!pruning.prune (result.models, dropped))
+      return false;
+  }
+  result.timing_ms.emplace_back ("box_pruning", watch.getTime());
   return true;
 }
 

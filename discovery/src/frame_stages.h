@@ -73,6 +73,16 @@ mergeBySize (const DiscoveryParameters& p,
              FramePlane& plane,
              DiscoveryResult& result);
 
+/** Drop the observations outside the box a model's copies occupy on the table
+  * (DiscoveryParameters::prune_outside_box), when the organized frame is known; times the
+  * "box_pruning" stage either way.
+  */
+bool
+pruneOutsideBoxes (const DiscoveryParameters& p,
+                   const KeypointSurface& frame,
+                   FramePlane& plane,
+                   DiscoveryResult& result);
+
 /** Remove the instances that repeat a print on one object with another of their model
   * (DiscoveryParameters::remove_repeated_prints), when the organized frame is known; times the
   * "repeated_prints" stage either way.

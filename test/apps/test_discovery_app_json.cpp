@@ -83,6 +83,7 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "surface",
                             "size_split",
                             "size_merge",
+                            "box_pruning",
                             "repeated_prints",
                             "size_search",
                             "interpenetration",

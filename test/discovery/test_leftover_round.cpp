@@ -151,6 +151,7 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
                                          "surface",
                                          "size_split",
                                          "size_merge",
+                                         "box_pruning",
                                          "repeated_prints",
                                          "size_search",
                                          "interpenetration",

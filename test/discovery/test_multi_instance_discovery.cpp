@@ -635,13 +635,27 @@ TEST (MultiInstanceDiscovery,
       mid::test::renderBoxes (rowOfBoxes (kCookies, 5, -0.25, 0.13, 0.85, 0.0), 0.9);
   expectOneInstancePerBox (scene, discover (scene));
 
-  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> unpruned;
-  unpruned.setInputCloud (scene.cloud);
-  mid::DiscoveryParameters keep;
-  keep.prune_observations = false;
-  unpruned.setParameters (keep);
-  mid::DiscoveryResult kept;
-  ASSERT_TRUE (unpruned.discover (kept));
+  // Either pruning alone keeps 90 % of each instance's keypoints on its box: the residual and
+  // landmark box (prune_observations), or the box the copies occupy on the table
+  // (prune_outside_box, since session 41; it leaves the keypoints inside the box that the
+  // pose does not explain, which the residual drops); without both, one instance holds less.
+  const auto discoverWith = [&scene] (bool observations, bool outside_box) {
+    mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+    discovery.setInputCloud (scene.cloud);
+    mid::DiscoveryParameters p;
+    p.prune_observations = observations;
+    p.prune_outside_box = outside_box;
+    discovery.setParameters (p);
+    mid::DiscoveryResult result;
+    EXPECT_TRUE (discovery.discover (result));
+    return result;
+  };
+  expectOneInstancePerBox (scene, discoverWith (true, false));
+  const mid::DiscoveryResult boxed = discoverWith (false, true);
+  ASSERT_EQ (boxed.models.size(), 1u);
+  EXPECT_EQ (boxed.models.front().instances.size(), 5u);
+  EXPECT_GE (smallestShareOnOneBox (scene, boxed, boxed.models.front()), 0.9);
+  const mid::DiscoveryResult kept = discoverWith (false, false);
   ASSERT_EQ (kept.models.size(), 1u);
   EXPECT_LT (smallestShareOnOneBox (scene, kept, kept.models.front()), 0.9);
 }

@@ -1,0 +1,179 @@
+// ModelBoxPruning on rendered boxes resting on a table at known poses: a row of copies whose
+// model took each copy's print with its neighbour's, as one cluster along a row builds it.
+#include "resting_boxes.h"
+
+#include <mid/segmentation/model_box_pruning.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+namespace {
+
+using mid::test::restingBox;
+using Boxes = mid::test::RestingBoxes;
+
+constexpr int kCopies = 5;
+
+/** Five copies of one print in a row, turned alike, 0.05 m apart (their longest edges, 0.12 m,
+  * along the row).
+  */
+std::vector<mid::test::BoxSpec>
+rowOfFive ()
+{
+  std::vector<mid::test::BoxSpec> row;
+  row.reserve (kCopies);
+  for (int b = 0; b < kCopies; ++b)
+    row.push_back (restingBox (mid::test::kApplePrint, 0.17 * (b - 2), 0.0, 0.0));
+  return row;
+}
+
+/** Add the keypoints on box `b` to `instance` (at its pose), each as a landmark of its own;
+  * with `near_half`, only those on the half of the box towards the start of the row.
+  */
+void
+observeBox (const Boxes& scene,
+            int b,
+            bool near_half,
+            mid::ModelInstance& instance,
+            mid::ObjectModel& model)
+{
+  const Eigen::Affine3f to_model (instance.pose.inverse());
+  const float centre = static_cast<float> (
+      scene.scene.boxes[static_cast<std::size_t> (b)].pose.translation().x());
+  for (const auto k : scene.on ({b})) {
+    if (near_half && (*scene.keypoints)[static_cast<std::size_t> (k)].x > centre)
+      continue;
+    pcl::PointNormal landmark = (*scene.keypoints)[static_cast<std::size_t> (k)];
+    landmark.getVector3fMap() = to_model * landmark.getVector3fMap();
+    landmark.getNormalVector3fMap() =
+        to_model.linear() * landmark.getNormalVector3fMap();
+    instance.keypoints.push_back (k);
+    instance.landmarks.push_back (static_cast<int> (model.landmarks.size()));
+    model.descriptor_landmarks.push_back (instance.landmarks.back());
+    model.landmarks.push_back (landmark);
+    model.descriptors.push_back ((*scene.descriptors)[static_cast<std::size_t> (k)]);
+  }
+}
+
+/** The model a cluster along the row builds: an instance at the true pose of each box (the
+  * model frame is a box's own), each observing its box, and the first two also the half of
+  * the next box that faces them. The surfaces measured from the instances' keypoints then
+  * hold boxes 3 and 4 whole; the others are joined with or cut by a neighbour.
+  */
+mid::ObjectModel
+copyWithItsNeighbour (const Boxes& scene)
+{
+  mid::ObjectModel model;
+  for (int b = 0; b < kCopies; ++b) {
+    mid::ModelInstance instance;
+    instance.pose =
+        scene.scene.boxes[static_cast<std::size_t> (b)].pose.matrix().cast<float>();
+    observeBox (scene, b, false, instance, model);
+    if (b < 2)
+      observeBox (scene, b + 1, true, instance, model);
+    model.instances.push_back (instance);
+  }
+  return model;
+}
+
+/** The model's landmarks are each observed by an instance, and each descriptor's landmark
+  * exists.
+  */
+void
+expectConsistent (const mid::ObjectModel& model)
+{
+  std::vector<bool> observed (model.landmarks.size(), false);
+  for (const auto& instance : model.instances) {
+    ASSERT_EQ (instance.keypoints.size(), instance.landmarks.size());
+    for (const int l : instance.landmarks) {
+      ASSERT_GE (l, 0);
+      ASSERT_LT (static_cast<std::size_t> (l), model.landmarks.size());
+      observed[static_cast<std::size_t> (l)] = true;
+    }
+  }
+  for (std::size_t l = 0; l < observed.size(); ++l)
+    EXPECT_TRUE (observed[l]) << "landmark " << l << " is observed by no instance";
+  ASSERT_EQ (model.descriptors.size(), model.descriptor_landmarks.size());
+  for (const int l : model.descriptor_landmarks)
+    EXPECT_LT (static_cast<std::size_t> (l), model.landmarks.size());
+}
+
+} // namespace
+
+TEST (ModelBoxPruning, KeepsEachCopyOfARowToItsOwnBox)
+{
+  const Boxes scene (rowOfFive());
+  mid::ObjectModels models = {copyWithItsNeighbour (scene)};
+  std::size_t on_neighbours = 0;
+  for (int b = 0; b < 2; ++b)
+    on_neighbours +=
+        models[0].instances[static_cast<std::size_t> (b)].keypoints.size() -
+        scene.on ({b}).size();
+  ASSERT_GT (on_neighbours, 15u) << "the print shows too few keypoints";
+
+  std::size_t dropped = 0;
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), static_cast<std::size_t> (kCopies));
+  EXPECT_EQ (dropped, on_neighbours);
+  for (std::size_t b = 0; b < kCopies; ++b) {
+    const auto& instance = models[0].instances[b];
+    EXPECT_EQ (instance.keypoints.size(), scene.on ({static_cast<int> (b)}).size())
+        << "box " << b;
+    EXPECT_EQ (scene.boxOf (instance.keypoints), static_cast<int> (b));
+    for (const auto k : instance.keypoints)
+      EXPECT_EQ (scene.box_of[static_cast<std::size_t> (k)], static_cast<int> (b))
+          << "box " << b;
+  }
+  ASSERT_NO_FATAL_FAILURE (expectConsistent (models[0]));
+}
+
+TEST (ModelBoxPruning, LeavesTheModelOfWholeCopiesAsItIs)
+{
+  const Boxes scene (rowOfFive());
+  const mid::ObjectModel truth = scene.modelOf ({0, 1, 2, 3, 4});
+  mid::ObjectModels models = {truth};
+  std::size_t dropped = std::numeric_limits<std::size_t>::max();
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  EXPECT_EQ (dropped, 0u);
+  ASSERT_EQ (models.size(), 1u);
+  EXPECT_EQ (models[0].landmarks.size(), truth.landmarks.size());
+  ASSERT_EQ (models[0].instances.size(), truth.instances.size());
+  for (std::size_t i = 0; i < truth.instances.size(); ++i)
+    EXPECT_EQ (models[0].instances[i].keypoints, truth.instances[i].keypoints);
+}
+
+TEST (ModelBoxPruning, LeavesAModelAloneWhoseCopiesDoNotAgreeOnItsSize)
+{
+  // With two instances the model has two measured copies: asked for three that agree, it has
+  // no size, and its instances keep their neighbours' keypoints.
+  const Boxes scene (rowOfFive());
+  mid::ObjectModel model = copyWithItsNeighbour (scene);
+  model.instances.resize (2);
+  mid::ObjectModels models = {model};
+  auto pruning = mid::test::measuringStep<mid::ModelBoxPruning> (scene);
+  pruning.setMinAgreeing (3);
+  std::size_t dropped = 1;
+  ASSERT_TRUE (pruning.prune (models, dropped));
+  EXPECT_EQ (dropped, 0u);
+  EXPECT_EQ (models[0].instances[0].keypoints, model.instances[0].keypoints);
+  EXPECT_EQ (models[0].instances[1].keypoints, model.instances[1].keypoints);
+}
+
+TEST (ModelBoxPruning, RefusesANegativeMarginAndLeavesTheModels)
+{
+  const Boxes scene (rowOfFive());
+  const mid::ObjectModel model = copyWithItsNeighbour (scene);
+  mid::ObjectModels models = {model};
+  auto pruning = mid::test::measuringStep<mid::ModelBoxPruning> (scene);
+  pruning.setMargin (-0.01f);
+  std::size_t dropped = 7;
+  EXPECT_FALSE (pruning.prune (models, dropped));
+  EXPECT_EQ (dropped, 0u);
+  EXPECT_EQ (models[0].instances[0].keypoints, model.instances[0].keypoints);
+  EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
+}
