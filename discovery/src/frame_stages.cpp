@@ -3,7 +3,6 @@
 #include "model_stages.h"
 #include "stage_tools.h"
 
-#include <mid/registration/model_refinement.h>
 #include <mid/registration/observation_pruning.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/instance_extent.h>
@@ -206,7 +205,6 @@ mergeBySize (const DiscoveryParameters& p,
     if (!merger.merge (result.models))
       return false;
   }
-
   result.timing_ms.emplace_back ("size_merge", watch.getTime());
   return true;
 }
