@@ -194,7 +194,8 @@ printHelp (const char* program)
         "observations: largest distance of a kept one from its landmark, metres",
         static_cast<double> (d.observation_max_residual));
   line ("-obs_margin D",
-        "observations: largest distance of a kept one outside the model's box, metres",
+        "observations: largest distance of a kept one outside the model's landmark box "
+        "and outside the box its copies occupy on the table, metres",
         static_cast<double> (d.observation_box_margin));
   line ("-size_kp N",
         "size search: free keypoints an object needs to become an instance",

@@ -148,8 +148,7 @@ runStages (const DiscoveryParameters& p,
   else {
     result.timing_ms.emplace_back ("triplets", 0.0);
     watch.reset();
-    if (!detail::groupWithPeer (
-            p, result.keypoints, surface, result.matches, *clusters))
+    if (!groupWithPeer (p, result.keypoints, surface, result.matches, *clusters))
       return false;
     result.clusters = clusters->size();
     result.timing_ms.emplace_back ("clustering", watch.getTime());

@@ -1,7 +1,8 @@
 #pragma once
 
 // The discovery pipeline's stages on the organized frame: its grey levels and projection, the
-// refinement on its depth, and the boxes the copies occupy on its support plane.
+// refinement on its depth, the boxes the copies occupy on its support plane, and the last
+// pruning of the observations.
 
 #include <mid/discovery/discovery_parameters.h>
 #include <mid/discovery/discovery_result.h>

@@ -35,9 +35,9 @@ insideBox (const KeypointCloud& keypoints,
   }
 }
 
-/** Keep the observations flagged `inside`; an instance left with none goes, unless fewer than
-  * two instances would stay (then nothing changes); landmarks left unobserved go. Returns how
-  * many observations went.
+/** Keep the observations flagged `inside`; an instance left with none (that had some) goes,
+  * unless fewer than two instances would stay (then nothing changes); landmarks left unobserved
+  * go. Returns how many observations went.
   */
 std::size_t
 keepInside (const KeypointCloud& keypoints,
@@ -56,7 +56,7 @@ keepInside (const KeypointCloud& keypoints,
         instance.landmarks.push_back (model.instances[i].landmarks[o]);
       }
     dropped += inside[i].size() - instance.keypoints.size();
-    if (!instance.keypoints.empty())
+    if (!instance.keypoints.empty() || model.instances[i].keypoints.empty())
       kept.push_back (std::move (instance));
   }
   if (dropped == 0 || kept.size() < 2)
@@ -80,6 +80,10 @@ ModelBoxPruning::prune (ObjectModels& models, std::size_t& dropped) const
 {
   dropped = 0;
   std::string problem = measurementProblem (models);
+  for (std::size_t m = 0; problem.empty() && m < models.size(); ++m)
+    if (const std::string descriptors = descriptorProblem (models[m]);
+        !descriptors.empty())
+      problem = "model " + std::to_string (m) + ": " + descriptors;
   if (problem.empty() && !(margin_ >= 0.0f))
     problem = "the margin must be >= 0 (got " + std::to_string (margin_) + ")";
   if (!problem.empty()) {

@@ -655,6 +655,9 @@ TEST (MultiInstanceDiscovery,
   ASSERT_EQ (boxed.models.size(), 1u);
   EXPECT_EQ (boxed.models.front().instances.size(), 5u);
   EXPECT_GE (smallestShareOnOneBox (scene, boxed, boxed.models.front()), 0.9);
+  const auto boxes = boxesOf (scene, boxed, boxed.models.front());
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()),
+             (std::set<int>{0, 1, 2, 3, 4}));
   const mid::DiscoveryResult kept = discoverWith (false, false);
   ASSERT_EQ (kept.models.size(), 1u);
   EXPECT_LT (smallestShareOnOneBox (scene, kept, kept.models.front()), 0.9);

@@ -149,19 +149,98 @@ TEST (ModelBoxPruning, LeavesTheModelOfWholeCopiesAsItIs)
 
 TEST (ModelBoxPruning, LeavesAModelAloneWhoseCopiesDoNotAgreeOnItsSize)
 {
-  // With two instances the model has two measured copies: asked for three that agree, it has
-  // no size, and its instances keep their neighbours' keypoints.
+  // Box 0 joined with half of box 1, and box 3 whole: the two measured copies differ, the
+  // model has no size, and the first instance keeps its neighbour's keypoints.
   const Boxes scene (rowOfFive());
   mid::ObjectModel model = copyWithItsNeighbour (scene);
-  model.instances.resize (2);
+  model.instances = {model.instances[0], model.instances[3]};
+  ASSERT_GT (model.instances[0].keypoints.size(), scene.on ({0}).size());
   mid::ObjectModels models = {model};
-  auto pruning = mid::test::measuringStep<mid::ModelBoxPruning> (scene);
-  pruning.setMinAgreeing (3);
   std::size_t dropped = 1;
-  ASSERT_TRUE (pruning.prune (models, dropped));
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
   EXPECT_EQ (dropped, 0u);
   EXPECT_EQ (models[0].instances[0].keypoints, model.instances[0].keypoints);
   EXPECT_EQ (models[0].instances[1].keypoints, model.instances[1].keypoints);
+}
+
+TEST (ModelBoxPruning, RemovesAnInstanceWhoseBoxHoldsNoneOfItsKeypoints)
+{
+  // A sixth instance observes box 1's keypoints but is posed 0.3 m off the row: its box holds
+  // none of them. It goes with its landmarks; an instance that never had an observation stays.
+  const Boxes scene (rowOfFive());
+  mid::ObjectModel model = copyWithItsNeighbour (scene);
+  mid::ModelInstance off_row;
+  off_row.pose = model.instances[0].pose;
+  off_row.pose (1, 3) += 0.3f;
+  observeBox (scene, 1, false, off_row, model);
+  model.instances.push_back (off_row);
+  mid::ModelInstance unobserved;
+  unobserved.pose = model.instances[4].pose;
+  model.instances.push_back (unobserved);
+
+  mid::ObjectModels models = {model};
+  std::size_t dropped = 0;
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  ASSERT_EQ (models[0].instances.size(), static_cast<std::size_t> (kCopies + 1));
+  EXPECT_TRUE (models[0].instances.back().keypoints.empty());
+  std::size_t kept = 0;
+  for (std::size_t b = 0; b < kCopies; ++b) {
+    const auto& instance = models[0].instances[b];
+    EXPECT_TRUE (instance.pose.isApprox (model.instances[b].pose)) << "box " << b;
+    EXPECT_EQ (scene.boxOf (instance.keypoints), static_cast<int> (b));
+    // The landmarks were renumbered: each observation still explains its keypoint.
+    EXPECT_LT (instance.rms_error, 1e-4f) << "box " << b;
+    kept += instance.keypoints.size();
+  }
+  std::size_t on_neighbours = 0;
+  for (int b = 0; b < 2; ++b)
+    on_neighbours += model.instances[static_cast<std::size_t> (b)].keypoints.size() -
+                     scene.on ({b}).size();
+  EXPECT_EQ (dropped, off_row.keypoints.size() + on_neighbours);
+  EXPECT_EQ (models[0].landmarks.size(), kept);
+  ASSERT_NO_FATAL_FAILURE (expectConsistent (models[0]));
+}
+
+TEST (ModelBoxPruning, LeavesAModelThatWouldKeepOneInstance)
+{
+  // Box 3 and box 4 whole agree on the size; the second instance is posed 0.3 m off the row,
+  // so none of its keypoints is in its box. Removing it would leave one instance: the model
+  // stays as it is.
+  const Boxes scene (rowOfFive());
+  mid::ObjectModel model;
+  for (int b = 3; b < kCopies; ++b) {
+    mid::ModelInstance instance;
+    instance.pose =
+        scene.scene.boxes[static_cast<std::size_t> (b)].pose.matrix().cast<float>();
+    if (b == 4)
+      instance.pose (1, 3) += 0.3f;
+    observeBox (scene, b, false, instance, model);
+    model.instances.push_back (instance);
+  }
+  mid::ObjectModels models = {model};
+  std::size_t dropped = 1;
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  EXPECT_EQ (dropped, 0u);
+  ASSERT_EQ (models[0].instances.size(), 2u);
+  EXPECT_EQ (models[0].instances[1].keypoints, model.instances[1].keypoints);
+  EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
+}
+
+TEST (ModelBoxPruning, RefusesAModelWithInconsistentDescriptors)
+{
+  const Boxes scene (rowOfFive());
+  mid::ObjectModel model = copyWithItsNeighbour (scene);
+  model.descriptor_landmarks.back() = static_cast<int> (model.landmarks.size());
+  mid::ObjectModels models = {model};
+  std::size_t dropped = 3;
+  EXPECT_FALSE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  EXPECT_EQ (dropped, 0u);
+  EXPECT_EQ (models[0].instances[0].keypoints, model.instances[0].keypoints);
+  EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
 }
 
 TEST (ModelBoxPruning, RefusesANegativeMarginAndLeavesTheModels)

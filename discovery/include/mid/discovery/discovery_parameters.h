@@ -409,7 +409,8 @@ struct DiscoveryParameters
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the
     * paper; pruneUnexplainedObservations()): a keypoint farther than
     * observation_max_residual (metres, > 0; the paper's inlier threshold) from where the pose
-    * puts its landmark, or farther than observation_box_margin (metres, >= 0) outside the
+    * puts its landmark, or farther than observation_box_margin (metres, >= 0; also the margin
+    * of prune_outside_box) outside the
     * model's landmark box (unless the instance alone observes its landmark), is not the
     * instance's (a keypoint of a touching copy that a cluster spanning two copies brought in).
     * Landmarks that lose every observation go. The instances' keypoints and image boxes, what

@@ -21,14 +21,15 @@ namespace mid {
   * (ModelSize::box_in_model). An observation whose keypoint, brought into the
   * model frame by its instance's pose, lies farther than the margin outside that box is
   * dropped; an instance left with no observation is removed (its pose puts the box where none
-  * of its keypoints lie), unless the model would keep fewer than two instances (the model is
+  * of its keypoints lie; one that had none to begin with stays), unless the model would keep fewer than two instances (the model is
   * then left as it is); a landmark no instance observes any longer is removed with its
-  * descriptors. Models without such a size are left as they are. Poses do not change.
+  * descriptors. Models without such a size, and all models when no support plane is found,
+  * are left as they are. Poses do not change.
   */
 class ModelBoxPruning : public ModelSizeMeasurement
 {
 public:
-  ModelBoxPruning() { min_agreeing_ = 2; }
+  ModelBoxPruning() { setMinAgreeing (2); }
 
   /** \brief How far (metres, default 0.02, >= 0) a kept observation may lie outside the box. */
   ///@{
@@ -49,13 +50,14 @@ public:
     * pruned model's diameter is updated, its frame not centred again
     * \param[out] dropped how many observations were dropped (0 on failure)
     * \return false, with a PCL_ERROR and the models unchanged, if an input is missing or
-    * inconsistent (SupportPlaneMeasurement) or a parameter is out of its range
+    * inconsistent (SupportPlaneMeasurement; a model's descriptors that do not match its
+    * landmarks) or a parameter is out of its range
     */
   bool
   prune (ObjectModels& models, std::size_t& dropped) const;
 
 private:
-  float margin_ = 0.02f;
+  float margin_ = 0.02f; ///< see setMargin()
 };
 
 } // namespace mid
