@@ -216,6 +216,9 @@ printHelp (const char* program)
       "-max_chroma D",
       "largest difference of the mean colours (chromaticity) a pose compares, 2 = off",
       static_cast<double> (d.max_chromaticity_difference));
+  line ("-max_vivid_chroma D",
+        "the same over the vivid colours alone (the inks), 2 = off",
+        static_cast<double> (d.max_vivid_chromaticity_difference));
   line ("-verify_radius R",
         "verification: surface compared around a keypoint, metres",
         static_cast<double> (d.verification_radius));
@@ -381,6 +384,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-min_correlation", 1},
                                       {"-verify_radius", 1},
                                       {"-max_chroma", 1},
+                                      {"-max_vivid_chroma", 1},
                                       {"-leftover_desc_dist", 1},
                                       {"-leftover_margin", 1},
                                       {"-region_margin", 1},
@@ -502,6 +506,8 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-min_correlation", p.min_photometric_correlation) &&
       parseNumber (argc, argv, "-verify_radius", p.verification_radius) &&
       parseNumber (argc, argv, "-max_chroma", p.max_chromaticity_difference) &&
+      parseNumber (
+          argc, argv, "-max_vivid_chroma", p.max_vivid_chromaticity_difference) &&
       parseNumber (argc, argv, "-guided_seed_dist", p.guided_seed_distance) &&
       parseNumber (argc, argv, "-guided_desc_dist", p.guided_descriptor_distance) &&
       parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&

@@ -112,6 +112,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "max_chromaticity_difference",
              static_cast<double> (p.max_chromaticity_difference),
              "> 0");
+  c.require (p.max_vivid_chromaticity_difference > 0.0f,
+             "max_vivid_chromaticity_difference",
+             static_cast<double> (p.max_vivid_chromaticity_difference),
+             "> 0");
   c.require (p.min_photometric_correlation >= -1.0f &&
                  p.min_photometric_correlation <= 1.0f,
              "min_photometric_correlation",

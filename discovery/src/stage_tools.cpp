@@ -65,6 +65,7 @@ makeVerification (const DiscoveryParameters& p,
   verification.setDepthTolerance (p.verification_depth_tolerance);
   verification.setMinCorrelation (min_correlation);
   verification.setMaxChromaticityDifference (p.max_chromaticity_difference);
+  verification.setMaxVividChromaticityDifference (p.max_vivid_chromaticity_difference);
   return verification;
 }
 
@@ -185,6 +186,7 @@ makeGuidedSearch (const DiscoveryParameters& p,
   search.setMinInliers (p.guided_min_inliers);
   search.setMinCorrelation (p.guided_min_correlation);
   search.setMaxChromaticityDifference (p.max_chromaticity_difference);
+  search.setMaxVividChromaticityDifference (p.max_vivid_chromaticity_difference);
   search.setCorrelationRadius (p.verification_radius);
   search.setDepthTolerance (p.verification_depth_tolerance);
   search.setMaxHypotheses (p.guided_hypotheses);

@@ -15,25 +15,65 @@ namespace mid {
 
 namespace {
 
-/** Grey-level pairs: x at a point's own pixel, y where it moved to; and the chromaticity
-  * differences of the pairs where both pixels have a colour.
+/** How far a chromaticity (red and green shares) lies from grey: the sum of the three shares'
+  * distances from a third (0 for grey, up to 4/3 for a pure primary).
   */
-struct GreyPairs : detail::PairedSums
+double
+saturation (const Chromaticity& c)
 {
-  double colour_pairs = 0.0;
-  /** Sums of the red and green shares at the own pixels and where they moved to. */
+  const double third = 1.0 / 3.0;
+  return std::abs (c[0] - third) + std::abs (c[1] - third) +
+         std::abs (1.0 - c[0] - c[1] - third);
+}
+
+/** Sums of the chromaticities of colour pairs: at the own pixels and where they moved to. */
+struct ColourSums
+{
+  double pairs = 0.0;
   double own_red = 0.0, own_green = 0.0, moved_red = 0.0, moved_green = 0.0;
 
   void
-  addColours (const Chromaticity& a, const Chromaticity& b)
+  add (const Chromaticity& a, const Chromaticity& b)
   {
-    if (!std::isfinite (a[0]) || !std::isfinite (b[0]))
-      return;
-    colour_pairs += 1.0;
+    pairs += 1.0;
     own_red += a[0];
     own_green += a[1];
     moved_red += b[0];
     moved_green += b[1];
+  }
+};
+
+/** |dr| + |dg| between the mean colour of one side and the other's, over both directions
+  * (forward: P moved onto Q; backward: Q moved onto P).
+  */
+double
+meanColourDifference (const ColourSums& forward, const ColourSums& backward)
+{
+  const double n = forward.pairs + backward.pairs;
+  return std::abs (forward.own_red + backward.moved_red - forward.moved_red -
+                   backward.own_red) /
+             n +
+         std::abs (forward.own_green + backward.moved_green - forward.moved_green -
+                   backward.own_green) /
+             n;
+}
+
+/** Grey-level pairs: x at a point's own pixel, y where it moved to; and the chromaticities of
+  * the pairs where both pixels have a colour, of all of them and of the vivid ones.
+  */
+struct GreyPairs : detail::PairedSums
+{
+  ColourSums colours, vivid;
+
+  /** Add a colour pair; vivid if either pixel's saturation() reaches `vivid_saturation`. */
+  void
+  addColours (const Chromaticity& a, const Chromaticity& b, double vivid_saturation)
+  {
+    if (!std::isfinite (a[0]) || !std::isfinite (b[0]))
+      return;
+    colours.add (a, b);
+    if (std::max (saturation (a), saturation (b)) >= vivid_saturation)
+      vivid.add (a, b);
   }
 
   /** True if both sides vary by more than one grey level (standard deviation): below that, a
@@ -66,7 +106,8 @@ movedSurfacePairs (const KeypointSurface& surface,
                    const pcl::Indices& keypoints,
                    const Eigen::Matrix4f& motion,
                    float radius,
-                   float tolerance)
+                   float tolerance,
+                   double vivid_saturation)
 {
   const pcl::PointCloud<pcl::PointXYZ>& cloud = *surface.organized;
   const std::vector<float>& grey = *surface.intensity;
@@ -110,7 +151,8 @@ movedSurfacePairs (const KeypointSurface& surface,
         pairs.add (grey[own], grey[there]);
         if (surface.chromaticity)
           pairs.addColours ((*surface.chromaticity)[own],
-                            (*surface.chromaticity)[there]);
+                            (*surface.chromaticity)[there],
+                            vivid_saturation);
       }
   }
   return pairs;
@@ -170,14 +212,18 @@ std::string
 PhotometricVerification::inputProblem() const
 {
   if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) ||
-      !(max_chromaticity_difference_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
-      !(min_correlation_ <= 1.0f))
+      !(max_chromaticity_difference_ > 0.0f) || !(max_vivid_difference_ > 0.0f) ||
+      !(min_correlation_ >= -1.0f) || !(min_correlation_ <= 1.0f))
     return "the radius (" + std::to_string (radius_) + "), depth tolerance (" +
            std::to_string (depth_tolerance_) +
-           ") and largest chromaticity difference (" +
-           std::to_string (max_chromaticity_difference_) +
+           ") and largest chromaticity differences (" +
+           std::to_string (max_chromaticity_difference_) + ", vivid " +
+           std::to_string (max_vivid_difference_) +
            ") must be positive and the minimum correlation (" +
            std::to_string (min_correlation_) + ") in [-1, 1]";
+  if (!(vivid_saturation_ > 0.0f) || !(vivid_saturation_ <= 4.0f / 3.0f))
+    return "the saturation of a vivid colour must be in (0, 4/3] (got " +
+           std::to_string (vivid_saturation_) + ")";
   if (!isValidKeypointSurface (surface_, surface_.keypoint_pixels.size()))
     return "the keypoint surface must be an organized frame with every keypoint's "
            "pixel "
@@ -212,33 +258,32 @@ PhotometricVerification::compare (const TripletCluster& cluster) const
                                                cluster.source_indices,
                                                cluster.transformation,
                                                radius_,
-                                               depth_tolerance_);
+                                               depth_tolerance_,
+                                               vivid_saturation_);
   const GreyPairs backward = movedSurfacePairs (surface_,
                                                 pinhole_,
                                                 cluster.target_indices,
                                                 cluster.transformation.inverse(),
                                                 radius_,
-                                                depth_tolerance_);
+                                                depth_tolerance_,
+                                                vivid_saturation_);
   const auto enough = static_cast<double> (min_pairs_);
   agreement.correlation = std::min (forward.correlation(), backward.correlation());
   agreement.correlation_tested = forward.n >= enough && backward.n >= enough &&
                                  forward.contrasted() && backward.contrasted();
+  // The mean colour of one side against the other's, over both directions: a pixel or two
+  // of misregistration between colour and depth moves single pairs across print edges, not
+  // the means.
   agreement.chromaticity_tested = surface_.chromaticity &&
-                                  forward.colour_pairs >= enough &&
-                                  backward.colour_pairs >= enough;
-  if (agreement.chromaticity_tested) {
-    // The mean colour of one side against the other's, over both directions: a pixel or two
-    // of misregistration between colour and depth moves single pairs across print edges, not
-    // the means.
-    const double n = forward.colour_pairs + backward.colour_pairs;
+                                  forward.colours.pairs >= enough &&
+                                  backward.colours.pairs >= enough;
+  if (agreement.chromaticity_tested)
     agreement.chromaticity_difference =
-        std::abs (forward.own_red + backward.moved_red - forward.moved_red -
-                  backward.own_red) /
-            n +
-        std::abs (forward.own_green + backward.moved_green - forward.moved_green -
-                  backward.own_green) /
-            n;
-  }
+        meanColourDifference (forward.colours, backward.colours);
+  agreement.vivid_tested = surface_.chromaticity && forward.vivid.pairs >= enough &&
+                           backward.vivid.pairs >= enough;
+  if (agreement.vivid_tested)
+    agreement.vivid_difference = meanColourDifference (forward.vivid, backward.vivid);
   return agreement;
 }
 
@@ -249,7 +294,9 @@ PhotometricVerification::rejects (const Agreement& agreement) const
           agreement.correlation < static_cast<double> (min_correlation_)) ||
          (agreement.chromaticity_tested &&
           agreement.chromaticity_difference >
-              static_cast<double> (max_chromaticity_difference_));
+              static_cast<double> (max_chromaticity_difference_)) ||
+         (agreement.vivid_tested &&
+          agreement.vivid_difference > static_cast<double> (max_vivid_difference_));
 }
 
 double

@@ -347,16 +347,132 @@ TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
   ASSERT_TRUE (verification.filter ({copies}, verified));
   EXPECT_TRUE (verified.empty());
 
-  // Colours off (2 or more), or a frame without them: the grey levels decide alone.
+  // Colours off (2 or more, all of them and the vivid ones), or a frame without them: the
+  // grey levels decide alone.
   verification.setMaxChromaticityDifference (2.0f);
+  verification.setMaxVividChromaticityDifference (2.0f);
   ASSERT_TRUE (verification.filter ({copies}, verified));
   EXPECT_EQ (verified.size(), 1u);
   verification.setMaxChromaticityDifference (0.1f);
+  verification.setMaxVividChromaticityDifference (0.15f);
   faces.surface.chromaticity = nullptr;
   verification.setKeypointSurface (faces.surface);
   EXPECT_FALSE (verification.compare (copies).chromaticity_tested);
   ASSERT_TRUE (verification.filter ({copies}, verified));
   EXPECT_EQ (verified.size(), 1u);
+}
+
+namespace {
+
+/** A pixel's grey level, as mid::greyLevels() weighs its channels. */
+template <typename PointT>
+float
+greyOf (const PointT& p)
+{
+  return 0.299f * static_cast<float> (p.r) + 0.587f * static_cast<float> (p.g) +
+         0.114f * static_cast<float> (p.b);
+}
+
+/** Repaint box `box`'s pixels of `cloud` as a print of one ink on white paper, keeping each
+  * pixel's grey level y (0.299 r + 0.587 g + 0.114 b): the darkest fifth of the box's pixels
+  * (y below `ink_below`) in the ink's hue (`ink`, a colour direction), the rest grey. Two
+  * products of one brand: one layout and font in other inks.
+  */
+void
+paintInk (const mid::test::RenderedObjectsScene& scene,
+          int box,
+          float ink_below,
+          const Eigen::Vector3f& ink,
+          pcl::PointCloud<pcl::PointXYZRGB>& cloud)
+{
+  const float ink_grey = 0.299f * ink.x() + 0.587f * ink.y() + 0.114f * ink.z();
+  for (int v = 0; v < scene.frame.instances.rows; ++v)
+    for (int u = 0; u < scene.frame.instances.cols; ++u) {
+      if (scene.frame.instances.at<int> (v, u) != box)
+        continue;
+      auto& p = cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
+      const float y = greyOf (p);
+      const Eigen::Vector3f c = y < ink_below ? Eigen::Vector3f (ink * (y / ink_grey))
+                                              : Eigen::Vector3f (y, y, y);
+      p.r = static_cast<std::uint8_t> (std::lround (std::min (c.x(), 255.0f)));
+      p.g = static_cast<std::uint8_t> (std::lround (std::min (c.y(), 255.0f)));
+      p.b = static_cast<std::uint8_t> (std::lround (std::min (c.z(), 255.0f)));
+    }
+}
+
+/** The grey level below which a fifth of box `box`'s pixels lie. */
+float
+darkestFifth (const mid::test::RenderedObjectsScene& scene, int box)
+{
+  std::vector<float> grey;
+  for (int v = 0; v < scene.frame.instances.rows; ++v)
+    for (int u = 0; u < scene.frame.instances.cols; ++u)
+      if (scene.frame.instances.at<int> (v, u) == box) {
+        const auto& p =
+            (*scene.cloud) (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
+        grey.push_back (greyOf (p));
+      }
+  std::nth_element (grey.begin(),
+                    grey.begin() + static_cast<std::ptrdiff_t> (grey.size() / 5),
+                    grey.end());
+  return grey[grey.size() / 5];
+}
+
+} // namespace
+
+TEST (PhotometricVerification, RejectsTheSameLayoutInAnotherInkByTheVividColours)
+{
+  // Boxes 0 and 1 carry one print; box 0's ink is repainted dark green, box 1's dark green
+  // (a copy) or dark blue (another product of the brand), on grey paper. The grey levels are
+  // the same either way, and the mean of all colours hardly differs: the paper dominates it.
+  // The vivid colours, the inks, tell the products apart.
+  const auto scene = threeBoxes();
+  PrintedFaces faces (scene);
+  const mid::TripletCluster copies = faces.cluster (0, 1);
+  const Eigen::Vector3f green (0.5f, 1.0f, 0.6f), blue (0.3f, 0.5f, 1.0f);
+  const auto compareInks = [&] (const Eigen::Vector3f& ink,
+                                const mid::PhotometricVerification& verification) {
+    pcl::PointCloud<pcl::PointXYZRGB> colour;
+    pcl::copyPointCloud (*scene.cloud, colour);
+    paintInk (scene, 0, darkestFifth (scene, 0), green, colour);
+    paintInk (scene, 1, darkestFifth (scene, 1), ink, colour);
+    PrintedFaces painted = faces;
+    painted.surface.chromaticity =
+        std::make_shared<const std::vector<mid::Chromaticity>> (
+            mid::chromaticities (colour));
+    mid::PhotometricVerification with_colours = verification;
+    with_colours.setKeypointSurface (painted.surface);
+    return std::make_pair (with_colours.compare (copies), with_colours);
+  };
+
+  const auto [same, verification] = compareInks (green, mid::PhotometricVerification());
+  ASSERT_TRUE (same.correlation_tested && same.chromaticity_tested &&
+               same.vivid_tested);
+  EXPECT_GT (same.correlation, 0.8);
+  EXPECT_LT (same.vivid_difference, 0.03);
+  EXPECT_FALSE (verification.rejects (same));
+
+  const auto [other, checked] = compareInks (blue, mid::PhotometricVerification());
+  ASSERT_TRUE (other.vivid_tested);
+  EXPECT_NEAR (other.correlation, same.correlation, 0.02); // grey levels up to rounding
+  EXPECT_LT (other.chromaticity_difference, 0.1);          // the mean alone keeps it
+  EXPECT_GT (other.vivid_difference, 0.15);
+  EXPECT_TRUE (checked.rejects (other));
+  mid::TripletClusters verified;
+  ASSERT_TRUE (checked.filter ({copies}, verified));
+  EXPECT_TRUE (verified.empty());
+
+  // The vivid colours off (2 or more): the mean of all colours keeps the other product.
+  mid::PhotometricVerification vivid_off;
+  vivid_off.setMaxVividChromaticityDifference (2.0f);
+  const auto [unchecked_agreement, unchecked] = compareInks (blue, vivid_off);
+  EXPECT_FALSE (unchecked.rejects (unchecked_agreement));
+  // A vivid saturation beyond both inks leaves too few vivid pairs to decide.
+  mid::PhotometricVerification pale;
+  pale.setVividSaturation (0.5f);
+  const auto [pale_agreement, pale_check] = compareInks (blue, pale);
+  EXPECT_FALSE (pale_agreement.vivid_tested);
+  EXPECT_FALSE (pale_check.rejects (pale_agreement));
 }
 
 TEST (PhotometricVerification, KeepsAClusterTheFrameCannotTell)
@@ -439,6 +555,19 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
     verification.setMaxChromaticityDifference (chroma);
     mid::TripletClusters verified = stale;
     EXPECT_FALSE (verification.filter (clusters, verified));
+    EXPECT_TRUE (verified.empty());
+    verification.setMaxChromaticityDifference (0.1f);
+    verification.setMaxVividChromaticityDifference (chroma);
+    verified = stale;
+    EXPECT_FALSE (verification.filter (clusters, verified));
+    EXPECT_TRUE (verified.empty());
+  }
+  for (const float saturation : {0.0f, 1.5f, float (NAN)}) {
+    mid::PhotometricVerification verification;
+    verification.setKeypointSurface (faces.surface);
+    verification.setVividSaturation (saturation);
+    mid::TripletClusters verified = stale;
+    EXPECT_FALSE (verification.filter (clusters, verified)) << saturation;
     EXPECT_TRUE (verified.empty());
   }
 }

@@ -117,6 +117,13 @@ struct DiscoveryParameters
     * PhotometricVerification::setMaxChromaticityDifference()).
     */
   float max_chromaticity_difference = 0.1f;
+  /** \brief The same over the vivid colours alone (> 0; 2 or more: off; not in the paper;
+    * PhotometricVerification::setMaxVividChromaticityDifference()): the inks, where two
+    * products of one brand that share a layout, a font and a white ground differ. Seeds 1 / 3
+    * / 4 and the pairs: instance F1 0.954 / 0.926 / 0.926 / 0.922 -> 0.956 / 0.931 / 0.926 /
+    * 0.936, every real frame's count unchanged (doc/benchmark.md, session 42).
+    */
+  float max_vivid_chromaticity_difference = 0.15f;
 
   // --- Peers (used instead of triplets + clustering when grouping is not Grouping::triplets) ---
   /** \brief The grouping method. */

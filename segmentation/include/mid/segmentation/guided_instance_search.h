@@ -252,6 +252,22 @@ public:
   }
   ///@}
 
+  /** \brief The same over the vivid colours alone
+    * (PhotometricVerification::setMaxVividChromaticityDifference(); default 0.15).
+    */
+  ///@{
+  void
+  setMaxVividChromaticityDifference (float difference)
+  {
+    max_vivid_difference_ = difference;
+  }
+  float
+  getMaxVividChromaticityDifference () const
+  {
+    return max_vivid_difference_;
+  }
+  ///@}
+
   /** \brief Radius of the grey-level comparison around each keypoint (metres, default
     * 0.015).
     */
@@ -315,6 +331,7 @@ private:
   float depth_tolerance_ = 0.01f;
   float min_correlation_ = 0.6f;
   float max_chromaticity_difference_ = 0.1f;
+  float max_vivid_difference_ = 0.15f;
   float correlation_radius_ = 0.015f;
   std::size_t max_hypotheses_ = 500;
 };

@@ -204,7 +204,8 @@ boxOfSize (const Eigen::Vector3f& size,
 
 /** \brief What the steps that measure the boxes of models on the support plane and compare
   * their sizes share (ModelSizeMerger, ModelSizeSplitter, ModelBoxExtender,
-  * SizeInstanceSearch, ModelBoxPruning, InterpenetrationFilter): the SupportPlaneMeasurement, and when two sizes agree.
+  * SizeInstanceSearch, ModelBoxPruning, InterpenetrationFilter): the
+  * SupportPlaneMeasurement, and when two sizes agree.
   */
 class ModelSizeMeasurement : public SupportPlaneMeasurement
 {
