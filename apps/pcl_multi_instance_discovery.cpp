@@ -214,7 +214,8 @@ printHelp (const char* program)
         static_cast<double> (d.min_photometric_correlation));
   line (
       "-max_chroma D",
-      "largest difference of the mean colours (chromaticity) a pose compares, 2 = off",
+      "largest difference of the mean colours (chromaticity) a pose compares, 2 = off "
+      "(with -max_vivid_chroma 2 for all colour checks)",
       static_cast<double> (d.max_chromaticity_difference));
   line ("-max_vivid_chroma D",
         "the same over the vivid colours alone (the inks), 2 = off",

@@ -36,7 +36,8 @@ resolveOverlaps (const DiscoveryParameters& p,
                  ObjectModels& models);
 
 /** The photometric verification on `surface` with the pipeline's radius, depth tolerance and
-  * largest chromaticity difference, and the given minimum correlation.
+  * largest chromaticity differences (all colours and the vivid ones), and the given minimum
+  * correlation.
   */
 PhotometricVerification
 makeVerification (const DiscoveryParameters& p,

@@ -287,7 +287,8 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
   if (!(seed_distance_ > 0.0f) || !(guided_distance_ > 0.0f) ||
       !(search_radius_ > 0.0f) || !(inlier_threshold_ > 0.0f) ||
       !(depth_tolerance_ > 0.0f) || !(correlation_radius_ > 0.0f) ||
-      !(max_chromaticity_difference_ > 0.0f) || !(max_vivid_difference_ > 0.0f) ||
+      !(max_chromaticity_difference_ > 0.0f) ||
+      !(max_vivid_chromaticity_difference_ > 0.0f) ||
       !(min_correlation_ >= -1.0f && min_correlation_ <= 1.0f) || min_inliers_ < 3)
     return "the distances, radii, tolerances and the chromaticity differences must be "
            "positive, the correlation in [-1, 1] and the minimum inliers at least 3";
@@ -384,7 +385,7 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
   verification.setDepthTolerance (depth_tolerance_);
   verification.setMinCorrelation (min_correlation_);
   verification.setMaxChromaticityDifference (max_chromaticity_difference_);
-  verification.setMaxVividChromaticityDifference (max_vivid_difference_);
+  verification.setMaxVividChromaticityDifference (max_vivid_chromaticity_difference_);
   const LandmarkBox box = computeLandmarkBox (model);
   ModelInstances copies = found_instances_;
   std::vector<std::size_t> on;

@@ -36,8 +36,8 @@ insideBox (const KeypointCloud& keypoints,
 }
 
 /** Keep the observations flagged `inside`; an instance left with none (that had some) goes,
-  * unless fewer than two instances would stay (then nothing changes); landmarks left unobserved
-  * go. Returns how many observations went.
+  * unless fewer than two instances with observations would stay (then nothing changes);
+  * landmarks left unobserved go. Returns how many observations went.
   */
 std::size_t
 keepInside (const KeypointCloud& keypoints,
@@ -45,7 +45,7 @@ keepInside (const KeypointCloud& keypoints,
             ObjectModel& model)
 {
   ModelInstances kept;
-  std::size_t dropped = 0;
+  std::size_t dropped = 0, observed = 0;
   for (std::size_t i = 0; i < model.instances.size(); ++i) {
     ModelInstance instance = model.instances[i];
     instance.keypoints.clear();
@@ -56,10 +56,11 @@ keepInside (const KeypointCloud& keypoints,
         instance.landmarks.push_back (model.instances[i].landmarks[o]);
       }
     dropped += inside[i].size() - instance.keypoints.size();
+    observed += instance.keypoints.empty() ? 0 : 1;
     if (!instance.keypoints.empty() || model.instances[i].keypoints.empty())
       kept.push_back (std::move (instance));
   }
-  if (dropped == 0 || kept.size() < 2)
+  if (dropped == 0 || observed < 2)
     return 0;
   model.instances.swap (kept);
   std::vector<bool> unobserved (model.landmarks.size(), true);

@@ -212,13 +212,14 @@ std::string
 PhotometricVerification::inputProblem() const
 {
   if (!(radius_ > 0.0f) || !(depth_tolerance_ > 0.0f) ||
-      !(max_chromaticity_difference_ > 0.0f) || !(max_vivid_difference_ > 0.0f) ||
-      !(min_correlation_ >= -1.0f) || !(min_correlation_ <= 1.0f))
+      !(max_chromaticity_difference_ > 0.0f) ||
+      !(max_vivid_chromaticity_difference_ > 0.0f) || !(min_correlation_ >= -1.0f) ||
+      !(min_correlation_ <= 1.0f))
     return "the radius (" + std::to_string (radius_) + "), depth tolerance (" +
            std::to_string (depth_tolerance_) +
            ") and largest chromaticity differences (" +
            std::to_string (max_chromaticity_difference_) + ", vivid " +
-           std::to_string (max_vivid_difference_) +
+           std::to_string (max_vivid_chromaticity_difference_) +
            ") must be positive and the minimum correlation (" +
            std::to_string (min_correlation_) + ") in [-1, 1]";
   if (!(vivid_saturation_ > 0.0f) || !(vivid_saturation_ <= 4.0f / 3.0f))
@@ -267,7 +268,8 @@ PhotometricVerification::compare (const TripletCluster& cluster) const
                                                 radius_,
                                                 depth_tolerance_,
                                                 vivid_saturation_);
-  const auto enough = static_cast<double> (min_pairs_);
+  // At least one pair, so that a tested mean is one.
+  const auto enough = static_cast<double> (std::max<std::size_t> (min_pairs_, 1));
   agreement.correlation = std::min (forward.correlation(), backward.correlation());
   agreement.correlation_tested = forward.n >= enough && backward.n >= enough &&
                                  forward.contrasted() && backward.contrasted();
@@ -296,7 +298,8 @@ PhotometricVerification::rejects (const Agreement& agreement) const
           agreement.chromaticity_difference >
               static_cast<double> (max_chromaticity_difference_)) ||
          (agreement.vivid_tested &&
-          agreement.vivid_difference > static_cast<double> (max_vivid_difference_));
+          agreement.vivid_difference >
+              static_cast<double> (max_vivid_chromaticity_difference_));
 }
 
 double

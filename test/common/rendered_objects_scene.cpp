@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <map>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace mid {
 namespace test {
@@ -103,14 +105,34 @@ boxUnderKeypoints (const RenderedObjectsScene& scene,
 
 namespace {
 
+/** A pixel's grey level (0.299 r + 0.587 g + 0.114 b). */
+template <typename PointT>
+float
+greyOf (const PointT& p)
+{
+  return 0.299f * static_cast<float> (p.r) + 0.587f * static_cast<float> (p.g) +
+         0.114f * static_cast<float> (p.b);
+}
+
+/** The pixels of box `box` in the scene's frame (column, row). */
+std::vector<std::pair<std::size_t, std::size_t>>
+boxPixels (const RenderedObjectsScene& scene, int box)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> pixels;
+  for (int v = 0; v < scene.frame.instances.rows; ++v)
+    for (int u = 0; u < scene.frame.instances.cols; ++u)
+      if (scene.frame.instances.at<int> (v, u) == box)
+        pixels.emplace_back (static_cast<std::size_t> (u),
+                             static_cast<std::size_t> (v));
+  return pixels;
+}
+
 /** Tint one pixel's colour blue, keeping its grey level. */
 template <typename PointT>
 void
 tintPixel (PointT& p)
 {
-  const float grey = 0.299f * static_cast<float> (p.r) +
-                     0.587f * static_cast<float> (p.g) +
-                     0.114f * static_cast<float> (p.b);
+  const float grey = greyOf (p);
   const float r = 0.5f * grey, b = std::min (255.0f, 1.6f * grey);
   const float g = std::clamp ((grey - 0.299f * r - 0.114f * b) / 0.587f, 0.0f, 255.0f);
   p.r = static_cast<std::uint8_t> (std::lround (r));
@@ -123,14 +145,10 @@ template <typename PointT>
 std::size_t
 tintBox (const RenderedObjectsScene& scene, int box, pcl::PointCloud<PointT>& cloud)
 {
-  std::size_t recoloured = 0;
-  for (int v = 0; v < scene.frame.instances.rows; ++v)
-    for (int u = 0; u < scene.frame.instances.cols; ++u)
-      if (scene.frame.instances.at<int> (v, u) == box) {
-        tintPixel (cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v)));
-        ++recoloured;
-      }
-  return recoloured;
+  const auto pixels = boxPixels (scene, box);
+  for (const auto& [u, v] : pixels)
+    tintPixel (cloud (u, v));
+  return pixels.size();
 }
 
 } // namespace
@@ -147,6 +165,34 @@ std::size_t
 tintKeepingGreyLevels (RenderedObjectsScene& scene, int box)
 {
   return tintBox (scene, box, *scene.cloud);
+}
+
+void
+paintInkKeepingGreyLevels (const RenderedObjectsScene& scene,
+                           int box,
+                           const Eigen::Vector3f& ink,
+                           pcl::PointCloud<pcl::PointXYZRGB>& cloud)
+{
+  const auto pixels = boxPixels (scene, box);
+  if (pixels.empty())
+    return;
+  std::vector<float> grey;
+  grey.reserve (pixels.size());
+  for (const auto& [u, v] : pixels)
+    grey.push_back (greyOf ((*scene.cloud) (u, v)));
+  const auto fifth = static_cast<std::ptrdiff_t> (grey.size() / 5);
+  std::nth_element (grey.begin(), grey.begin() + fifth, grey.end());
+  const float ink_below = grey[static_cast<std::size_t> (fifth)];
+  const float ink_grey = 0.299f * ink.x() + 0.587f * ink.y() + 0.114f * ink.z();
+  for (const auto& [u, v] : pixels) {
+    auto& p = cloud (u, v);
+    const float y = greyOf ((*scene.cloud) (u, v));
+    const Eigen::Vector3f c = y < ink_below ? Eigen::Vector3f (ink * (y / ink_grey))
+                                            : Eigen::Vector3f (y, y, y);
+    p.r = static_cast<std::uint8_t> (std::lround (std::min (c.x(), 255.0f)));
+    p.g = static_cast<std::uint8_t> (std::lround (std::min (c.y(), 255.0f)));
+    p.b = static_cast<std::uint8_t> (std::lround (std::min (c.z(), 255.0f)));
+  }
 }
 
 } // namespace test

@@ -78,5 +78,16 @@ tintKeepingGreyLevels (const RenderedObjectsScene& scene,
 std::size_t
 tintKeepingGreyLevels (RenderedObjectsScene& scene, int box);
 
+/** \brief Repaint box `box`'s pixels of `cloud` (a colour cloud of the scene's frame) as a
+  * print of one ink on grey paper, keeping each pixel's grey level: the darkest fifth of the
+  * box's pixels (in the scene's own cloud) in the hue of `ink` (a colour direction, r g b),
+  * the rest grey. Two products of one brand: one layout and font, other inks.
+  */
+void
+paintInkKeepingGreyLevels (const RenderedObjectsScene& scene,
+                           int box,
+                           const Eigen::Vector3f& ink,
+                           pcl::PointCloud<pcl::PointXYZRGB>& cloud);
+
 } // namespace test
 } // namespace mid

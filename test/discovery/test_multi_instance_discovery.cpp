@@ -524,6 +524,11 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   mid::DiscoveryParameters margin;
   margin.observation_box_margin = -0.01f;
   refuses (margin, "observation_box_margin");
+  mid::DiscoveryParameters vivid;
+  vivid.max_vivid_chromaticity_difference = 0.0f;
+  refuses (vivid, "max_vivid_chromaticity_difference");
+  vivid.max_vivid_chromaticity_difference = std::numeric_limits<float>::quiet_NaN();
+  refuses (vivid, "max_vivid_chromaticity_difference");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

@@ -1,10 +1,14 @@
 #include "rendered_keypoints.h"
 
 #include <mid/segmentation/guided_instance_search.h>
+#include <mid/segmentation/photometric_verification.h>
 
 #include <gtest/gtest.h>
+#include <pcl/common/io.h>
 
+#include <memory>
 #include <set>
+#include <vector>
 
 namespace {
 
@@ -100,6 +104,34 @@ TEST (GuidedInstanceSearch, RefusesACopyFoundAlready)
   EXPECT_EQ (boxes.boxOf (found.front().keypoints), 2);
 }
 
+TEST (GuidedInstanceSearch, RefusesACopyInAnotherInkByTheVividColours)
+{
+  // The print's ink repainted, grey levels kept: green on box 0 (the model) and box 1, blue on
+  // box 2 (another product of the brand). The vivid colours refuse box 2; off, it is found.
+  const FourBoxes boxes;
+  pcl::PointCloud<pcl::PointXYZRGB> colour;
+  pcl::copyPointCloud (*boxes.scene.cloud, colour);
+  const Eigen::Vector3f green (0.5f, 1.0f, 0.6f), blue (0.3f, 0.5f, 1.0f);
+  mid::test::paintInkKeepingGreyLevels (boxes.scene, 0, green, colour);
+  mid::test::paintInkKeepingGreyLevels (boxes.scene, 1, green, colour);
+  mid::test::paintInkKeepingGreyLevels (boxes.scene, 2, blue, colour);
+  mid::KeypointSurface painted = boxes.surface;
+  painted.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
+      mid::chromaticities (colour));
+  const auto findOn = [&] (int box, float max_vivid_difference) {
+    auto search = boxes.search();
+    search.setKeypointSurface (painted);
+    search.setCandidates (boxes.on ({-1, box}));
+    search.setMaxVividChromaticityDifference (max_vivid_difference);
+    mid::ModelInstances found;
+    EXPECT_TRUE (search.search (boxes.model, found));
+    return found.size();
+  };
+  EXPECT_EQ (findOn (1, 0.15f), 1u);
+  EXPECT_EQ (findOn (2, 0.15f), 0u);
+  EXPECT_EQ (findOn (2, 2.0f), 1u);
+}
+
 TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
 {
   const FourBoxes boxes;
@@ -122,6 +154,9 @@ TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
   search = boxes.search();
   search.setMinCorrelation (1.5f);
   EXPECT_TRUE (refused (search, boxes.model)) << "correlation above 1";
+  search = boxes.search();
+  search.setMaxVividChromaticityDifference (0.0f);
+  EXPECT_TRUE (refused (search, boxes.model)) << "no vivid colour difference allowed";
   search = boxes.search();
   mid::KeypointSurface no_grey = boxes.surface;
   no_grey.intensity = nullptr;

@@ -162,6 +162,14 @@ TEST (ModelBoxPruning, LeavesAModelAloneWhoseCopiesDoNotAgreeOnItsSize)
   EXPECT_EQ (dropped, 0u);
   EXPECT_EQ (models[0].instances[0].keypoints, model.instances[0].keypoints);
   EXPECT_EQ (models[0].instances[1].keypoints, model.instances[1].keypoints);
+
+  // Control: a third copy measured whole (box 4) agrees with box 3, and the first instance
+  // loses its neighbour's keypoints, so the table and the plane were there.
+  model.instances.push_back (copyWithItsNeighbour (scene).instances[4]);
+  models = {model};
+  ASSERT_TRUE (
+      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  EXPECT_EQ (dropped, model.instances[0].keypoints.size() - scene.on ({0}).size());
 }
 
 TEST (ModelBoxPruning, RemovesAnInstanceWhoseBoxHoldsNoneOfItsKeypoints)
@@ -209,24 +217,42 @@ TEST (ModelBoxPruning, LeavesAModelThatWouldKeepOneInstance)
   // so none of its keypoints is in its box. Removing it would leave one instance: the model
   // stays as it is.
   const Boxes scene (rowOfFive());
-  mid::ObjectModel model;
-  for (int b = 3; b < kCopies; ++b) {
-    mid::ModelInstance instance;
-    instance.pose =
-        scene.scene.boxes[static_cast<std::size_t> (b)].pose.matrix().cast<float>();
-    if (b == 4)
-      instance.pose (1, 3) += 0.3f;
-    observeBox (scene, b, false, instance, model);
-    model.instances.push_back (instance);
-  }
+  const auto twoCopies = [&scene] (bool with_box_4_posed_right) {
+    mid::ObjectModel model;
+    for (int b = 3; b < kCopies; ++b) {
+      mid::ModelInstance instance;
+      instance.pose =
+          scene.scene.boxes[static_cast<std::size_t> (b)].pose.matrix().cast<float>();
+      if (b == 4)
+        instance.pose (1, 3) += 0.3f;
+      observeBox (scene, b, false, instance, model);
+      model.instances.push_back (instance);
+    }
+    if (with_box_4_posed_right) {
+      mid::ModelInstance instance;
+      instance.pose = scene.scene.boxes[4].pose.matrix().cast<float>();
+      observeBox (scene, 4, false, instance, model);
+      model.instances.push_back (instance);
+    }
+    return model;
+  };
+  const mid::ObjectModel model = twoCopies (false);
   mid::ObjectModels models = {model};
   std::size_t dropped = 1;
-  ASSERT_TRUE (
-      mid::test::measuringStep<mid::ModelBoxPruning> (scene).prune (models, dropped));
+  const auto pruning = mid::test::measuringStep<mid::ModelBoxPruning> (scene);
+  ASSERT_TRUE (pruning.prune (models, dropped));
   EXPECT_EQ (dropped, 0u);
   ASSERT_EQ (models[0].instances.size(), 2u);
   EXPECT_EQ (models[0].instances[1].keypoints, model.instances[1].keypoints);
   EXPECT_EQ (models[0].landmarks.size(), model.landmarks.size());
+
+  // Control: with box 4 also posed right, two instances stay and the one off the row goes,
+  // so the two copies above did agree on the size.
+  const mid::ObjectModel three = twoCopies (true);
+  models = {three};
+  ASSERT_TRUE (pruning.prune (models, dropped));
+  EXPECT_EQ (dropped, three.instances[1].keypoints.size());
+  EXPECT_EQ (models[0].instances.size(), 2u);
 }
 
 TEST (ModelBoxPruning, RefusesAModelWithInconsistentDescriptors)

@@ -362,64 +362,6 @@ TEST (PhotometricVerification, RejectsTheSamePrintInOtherColours)
   EXPECT_EQ (verified.size(), 1u);
 }
 
-namespace {
-
-/** A pixel's grey level, as mid::greyLevels() weighs its channels. */
-template <typename PointT>
-float
-greyOf (const PointT& p)
-{
-  return 0.299f * static_cast<float> (p.r) + 0.587f * static_cast<float> (p.g) +
-         0.114f * static_cast<float> (p.b);
-}
-
-/** Repaint box `box`'s pixels of `cloud` as a print of one ink on white paper, keeping each
-  * pixel's grey level y (0.299 r + 0.587 g + 0.114 b): the darkest fifth of the box's pixels
-  * (y below `ink_below`) in the ink's hue (`ink`, a colour direction), the rest grey. Two
-  * products of one brand: one layout and font in other inks.
-  */
-void
-paintInk (const mid::test::RenderedObjectsScene& scene,
-          int box,
-          float ink_below,
-          const Eigen::Vector3f& ink,
-          pcl::PointCloud<pcl::PointXYZRGB>& cloud)
-{
-  const float ink_grey = 0.299f * ink.x() + 0.587f * ink.y() + 0.114f * ink.z();
-  for (int v = 0; v < scene.frame.instances.rows; ++v)
-    for (int u = 0; u < scene.frame.instances.cols; ++u) {
-      if (scene.frame.instances.at<int> (v, u) != box)
-        continue;
-      auto& p = cloud (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
-      const float y = greyOf (p);
-      const Eigen::Vector3f c = y < ink_below ? Eigen::Vector3f (ink * (y / ink_grey))
-                                              : Eigen::Vector3f (y, y, y);
-      p.r = static_cast<std::uint8_t> (std::lround (std::min (c.x(), 255.0f)));
-      p.g = static_cast<std::uint8_t> (std::lround (std::min (c.y(), 255.0f)));
-      p.b = static_cast<std::uint8_t> (std::lround (std::min (c.z(), 255.0f)));
-    }
-}
-
-/** The grey level below which a fifth of box `box`'s pixels lie. */
-float
-darkestFifth (const mid::test::RenderedObjectsScene& scene, int box)
-{
-  std::vector<float> grey;
-  for (int v = 0; v < scene.frame.instances.rows; ++v)
-    for (int u = 0; u < scene.frame.instances.cols; ++u)
-      if (scene.frame.instances.at<int> (v, u) == box) {
-        const auto& p =
-            (*scene.cloud) (static_cast<std::size_t> (u), static_cast<std::size_t> (v));
-        grey.push_back (greyOf (p));
-      }
-  std::nth_element (grey.begin(),
-                    grey.begin() + static_cast<std::ptrdiff_t> (grey.size() / 5),
-                    grey.end());
-  return grey[grey.size() / 5];
-}
-
-} // namespace
-
 TEST (PhotometricVerification, RejectsTheSameLayoutInAnotherInkByTheVividColours)
 {
   // Boxes 0 and 1 carry one print; box 0's ink is repainted dark green, box 1's dark green
@@ -434,8 +376,8 @@ TEST (PhotometricVerification, RejectsTheSameLayoutInAnotherInkByTheVividColours
                                 const mid::PhotometricVerification& verification) {
     pcl::PointCloud<pcl::PointXYZRGB> colour;
     pcl::copyPointCloud (*scene.cloud, colour);
-    paintInk (scene, 0, darkestFifth (scene, 0), green, colour);
-    paintInk (scene, 1, darkestFifth (scene, 1), ink, colour);
+    mid::test::paintInkKeepingGreyLevels (scene, 0, green, colour);
+    mid::test::paintInkKeepingGreyLevels (scene, 1, ink, colour);
     PrintedFaces painted = faces;
     painted.surface.chromaticity =
         std::make_shared<const std::vector<mid::Chromaticity>> (

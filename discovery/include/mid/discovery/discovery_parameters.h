@@ -184,7 +184,8 @@ struct DiscoveryParameters
     * additional instance detection (detect_additional_instances) needs the same with the
     * model's copy that observes most of its landmarks. The test is the
     * PhotometricVerification of the matched keypoints' surroundings, with the verification's
-    * radius, depth tolerance and largest chromaticity difference, and min_join_correlation (in
+    * radius, depth tolerance and largest chromaticity differences (all colours and the vivid
+    * ones), and min_join_correlation (in
     * [-1, 1]) as the smallest grey-level correlation each way; where the frame cannot tell
     * (too few pairs, a uniform surface), the copy joins. Needs the organized colour frame, as
     * verify_clusters does. On the benchmark's frames, 5 to 7 descriptor matches between the

@@ -253,18 +253,19 @@ public:
   ///@}
 
   /** \brief The same over the vivid colours alone
-    * (PhotometricVerification::setMaxVividChromaticityDifference(); default 0.15).
+    * (PhotometricVerification::setMaxVividChromaticityDifference(); default 0.15; the vivid
+    * saturation is the verification's default, 0.1).
     */
   ///@{
   void
   setMaxVividChromaticityDifference (float difference)
   {
-    max_vivid_difference_ = difference;
+    max_vivid_chromaticity_difference_ = difference;
   }
   float
   getMaxVividChromaticityDifference () const
   {
-    return max_vivid_difference_;
+    return max_vivid_chromaticity_difference_;
   }
   ///@}
 
@@ -331,7 +332,7 @@ private:
   float depth_tolerance_ = 0.01f;
   float min_correlation_ = 0.6f;
   float max_chromaticity_difference_ = 0.1f;
-  float max_vivid_difference_ = 0.15f;
+  float max_vivid_chromaticity_difference_ = 0.15f;
   float correlation_radius_ = 0.015f;
   std::size_t max_hypotheses_ = 500;
 };

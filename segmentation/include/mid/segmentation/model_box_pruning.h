@@ -22,8 +22,8 @@ namespace mid {
   * model frame by its instance's pose, lies farther than the margin outside that box is
   * dropped; an instance left with no observation is removed (its pose puts the box where none
   * of its keypoints lie; one that had none to begin with stays), unless the model would keep
-  * fewer than two instances (the model is then left as it is); a landmark no instance
-  * observes any longer is removed with its descriptors. Models without such a size, and all
+  * fewer than two instances with observations (the model is then left as it is); a landmark
+  * no instance observes any longer is removed with its descriptors. Models without such a size, and all
   * models when no support plane is found, are left as they are. Poses do not change.
   */
 class ModelBoxPruning : public ModelSizeMeasurement

@@ -144,12 +144,12 @@ public:
   void
   setMaxVividChromaticityDifference (float difference)
   {
-    max_vivid_difference_ = difference;
+    max_vivid_chromaticity_difference_ = difference;
   }
   float
   getMaxVividChromaticityDifference () const
   {
-    return max_vivid_difference_;
+    return max_vivid_chromaticity_difference_;
   }
   ///@}
 
@@ -269,7 +269,7 @@ private:
   float depth_tolerance_ = 0.01f;
   float min_correlation_ = 0.4f;
   float max_chromaticity_difference_ = 0.1f;
-  float max_vivid_difference_ = 0.15f;
+  float max_vivid_chromaticity_difference_ = 0.15f;
   float vivid_saturation_ = 0.1f;
   std::size_t min_pairs_ = 30;
 };
