@@ -448,6 +448,48 @@ TEST (MultiInstanceDiscovery, KeepsTheModelsOfOnePrintInOtherColoursApart)
   EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
 }
 
+TEST (MultiInstanceDiscovery,
+      KeepsTheModelsOfOneLayoutInOtherInksApartByTheVividColours)
+{
+  // Four copies of one print, its ink repainted with the grey levels kept: dark green on boxes 0
+  // and 1, dark blue on boxes 2 and 3 (two products of one brand on grey paper). The mean of
+  // all colours hardly differs, the paper dominates it; the inks do. Switched off, the four
+  // copies make one model.
+  const auto scene = mid::test::renderBoxes ({
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.16, -0.1, 0.85, 10.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.15, -0.11, 0.88, 100.0, 15.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (-0.14, 0.12, 0.83, -60.0)},
+      {kCookies, {0.16, 0.11, 0.04}, boxPose (0.16, 0.13, 0.86, 170.0, -10.0)},
+  });
+  auto colour = std::make_shared<pcl::PointCloud<pcl::PointXYZRGB>>();
+  pcl::copyPointCloud (*scene.cloud, *colour);
+  const Eigen::Vector3f green (0.5f, 1.0f, 0.6f), blue (0.3f, 0.5f, 1.0f);
+  for (int box = 0; box < 4; ++box)
+    mid::test::paintInkKeepingGreyLevels (scene, box, box < 2 ? green : blue, *colour);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGB> discovery;
+  discovery.setInputCloud (colour);
+  mid::DiscoveryParameters parameters;
+  parameters.merge_by_size = false; // one size: this step would merge them by design
+  const auto objectsFound = [&] (float max_vivid_difference) {
+    parameters.max_vivid_chromaticity_difference = max_vivid_difference;
+    discovery.setParameters (parameters);
+    mid::DiscoveryResult result;
+    EXPECT_TRUE (discovery.discover (result));
+    std::set<std::set<int>> objects;
+    for (const auto& model : result.models) {
+      const auto boxes = boxesOf (scene, result, model);
+      objects.insert (std::set<int> (boxes.begin(), boxes.end()));
+    }
+    return objects;
+  };
+  EXPECT_EQ (objectsFound (0.15f), (std::set<std::set<int>>{{0, 1}, {2, 3}}));
+  EXPECT_EQ (objectsFound (2.0f), (std::set<std::set<int>>{{0, 1, 2, 3}}));
+  // The clusters' verification alone (the guided searches off) tells the inks apart too.
+  parameters.guided_search = parameters.box_search = false;
+  EXPECT_EQ (objectsFound (0.15f), (std::set<std::set<int>>{{0, 1}, {2, 3}}));
+  EXPECT_EQ (objectsFound (2.0f), (std::set<std::set<int>>{{0, 1, 2, 3}}));
+}
+
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)
 {
   const auto scene = mid::test::renderBoxes ({
