@@ -190,6 +190,13 @@ printHelp (const char* program)
   line ("-repeat_inside S",
         "repeated prints: smallest share of an instance's keypoints in the other's box",
         static_cast<double> (d.repeated_print_min_inside));
+  line ("-disagree_surrounded S",
+        "size disagreement: largest share of occupied pixels around a copy standing "
+        "alone",
+        static_cast<double> (d.size_disagreement_max_surrounded));
+  line ("-disagree_copies N",
+        "size disagreement: fewest copies of a model it judges",
+        d.size_disagreement_min_copies);
   line ("-obs_residual D",
         "observations: largest distance of a kept one from its landmark, metres",
         static_cast<double> (d.observation_max_residual));
@@ -295,6 +302,10 @@ printHelp (const char* program)
       "  -keep_interpenetrating  keep the instances of a model whose boxes would "
       "interpenetrate\n");
   print_info ("                      (the paper's behaviour)\n");
+  print_info ("  -keep_disagreeing_sizes  keep a model whose copies stand alone on the "
+              "table and "
+              "agree\n");
+  print_info ("                      on no size (the paper's behaviour)\n");
   print_info (
       "  -keep_unexplained   keep the observations an instance's pose does not explain "
       "(the\n");
@@ -366,8 +377,11 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-repeat_shift", 1},
                                       {"-repeat_along", 1},
                                       {"-repeat_inside", 1},
+                                      {"-disagree_surrounded", 1},
+                                      {"-disagree_copies", 1},
                                       {"-keep_unexplained", 0},
                                       {"-keep_interpenetrating", 0},
+                                      {"-keep_disagreeing_sizes", 0},
                                       {"-obs_residual", 1},
                                       {"-obs_margin", 1},
                                       {"-no_size_search", 0},
@@ -474,6 +488,8 @@ parseOptions (int argc, char** argv, Options& options)
   p.prune_observations = !pcl::console::find_switch (argc, argv, "-keep_unexplained");
   p.remove_interpenetrating =
       !pcl::console::find_switch (argc, argv, "-keep_interpenetrating");
+  p.remove_disagreeing_sizes =
+      !pcl::console::find_switch (argc, argv, "-keep_disagreeing_sizes");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =
@@ -531,6 +547,9 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
       parseNumber (argc, argv, "-repeat_along", p.repeated_print_max_shift_along) &&
       parseNumber (argc, argv, "-repeat_inside", p.repeated_print_min_inside) &&
+      parseNumber (
+          argc, argv, "-disagree_surrounded", p.size_disagreement_max_surrounded) &&
+      parseNumber (argc, argv, "-disagree_copies", p.size_disagreement_min_copies) &&
       parseNumber (argc, argv, "-obs_residual", p.observation_max_residual) &&
       parseNumber (argc, argv, "-obs_margin", p.observation_box_margin) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&

@@ -292,6 +292,15 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "interpenetration_max_centre_distance",
              static_cast<double> (p.interpenetration_max_centre_distance),
              "in [0, 1]");
+  c.require (p.size_disagreement_max_surrounded >= 0.0f &&
+                 p.size_disagreement_max_surrounded <= 1.0f,
+             "size_disagreement_max_surrounded",
+             static_cast<double> (p.size_disagreement_max_surrounded),
+             "in [0, 1]");
+  c.require (p.size_disagreement_min_copies >= 2,
+             "size_disagreement_min_copies",
+             static_cast<double> (p.size_disagreement_min_copies),
+             ">= 2");
   c.require (p.observation_max_residual > 0.0f &&
                  std::isfinite (p.observation_max_residual),
              "observation_max_residual",

@@ -214,6 +214,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
       detail::removeRepeatedPrints (p, frame, plane, result) &&
       detail::searchBySize (p, frame, plane, result) &&
       detail::removeInterpenetrating (p, frame, plane, result) &&
+      detail::removeDisagreeingSizes (p, frame, plane, result) &&
       detail::pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)

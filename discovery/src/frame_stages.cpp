@@ -13,6 +13,7 @@
 #include <mid/segmentation/model_size_splitter.h>
 #include <mid/segmentation/photometric_verification.h>
 #include <mid/segmentation/repeated_print_filter.h>
+#include <mid/segmentation/size_disagreement_filter.h>
 #include <mid/segmentation/size_instance_search.h>
 #include <mid/segmentation/surface_pose_refinement.h>
 
@@ -290,6 +291,26 @@ removeInterpenetrating (const DiscoveryParameters& p,
       return false;
   }
   result.timing_ms.emplace_back ("interpenetration", watch.getTime());
+  return true;
+}
+
+bool
+removeDisagreeingSizes (const DiscoveryParameters& p,
+                        const KeypointSurface& frame,
+                        FramePlane& plane,
+                        DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_disagreeing_sizes && frame.organized) {
+    SizeDisagreementFilter filter;
+    setUpBoxMeasurement (p, frame, result, plane, filter);
+    filter.setMaxSurroundedShare (p.size_disagreement_max_surrounded);
+    filter.setMinCopies (p.size_disagreement_min_copies);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("size_disagreement", watch.getTime());
   return true;
 }
 

@@ -115,6 +115,16 @@ removeInterpenetrating (const DiscoveryParameters& p,
                         FramePlane& plane,
                         DiscoveryResult& result);
 
+/** Remove the models whose copies stand alone and agree on no size
+  * (DiscoveryParameters::remove_disagreeing_sizes), when the organized frame is known; times
+  * the "size_disagreement" stage either way.
+  */
+bool
+removeDisagreeingSizes (const DiscoveryParameters& p,
+                        const KeypointSurface& frame,
+                        FramePlane& plane,
+                        DiscoveryResult& result);
+
 /** Drop the observations that the instances' poses do not explain
   * (DiscoveryParameters::prune_observations); times the "observations" stage either way.
   */

@@ -296,7 +296,9 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-region_inliers 2",
                              "-leftover_desc_dist 0",
                              "-leftover_margin -0.01",
-                             "-min_ratio -0.5"}) {
+                             "-min_ratio -0.5",
+                             "-disagree_surrounded 1.5",
+                             "-disagree_copies 1"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");
   }

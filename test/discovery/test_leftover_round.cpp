@@ -142,9 +142,9 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
     for (const auto k : instance.keypoints)
       EXPECT_GE (k, 90); // A's 3 x 30 keypoints come first
   // Without an organized frame the patches, the search from the boxes, the surface
-  // refinement, the size split and merge, the removal of repeated prints, the size search and
-  // the removal of interpenetrating instances do not run, but are timed; the pruning of the
-  // observations runs.
+  // refinement, the size split and merge, the removal of repeated prints, the size search, the
+  // removal of interpenetrating instances and of models of disagreeing sizes do not run, but
+  // are timed; the pruning of the observations runs.
   const std::vector<std::string> last = {"leftovers",
                                          "patches",
                                          "box_search",
@@ -155,6 +155,7 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
                                          "repeated_prints",
                                          "size_search",
                                          "interpenetration",
+                                         "size_disagreement",
                                          "observations"};
   ASSERT_GE (result.timing_ms.size(), last.size());
   for (std::size_t i = 0; i < last.size(); ++i)

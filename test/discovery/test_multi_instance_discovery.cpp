@@ -571,6 +571,12 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   refuses (vivid, "max_vivid_chromaticity_difference");
   vivid.max_vivid_chromaticity_difference = std::numeric_limits<float>::quiet_NaN();
   refuses (vivid, "max_vivid_chromaticity_difference");
+  mid::DiscoveryParameters disagreement;
+  disagreement.size_disagreement_max_surrounded = 1.5f;
+  refuses (disagreement, "size_disagreement_max_surrounded");
+  disagreement = mid::DiscoveryParameters();
+  disagreement.size_disagreement_min_copies = 1;
+  refuses (disagreement, "size_disagreement_min_copies");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

@@ -414,6 +414,17 @@ struct DiscoveryParameters
   bool remove_interpenetrating = true;
   float interpenetration_max_centre_distance = 0.8f;
   ///@}
+  /** \brief Then remove the models whose copies, at least size_disagreement_min_copies (>= 2)
+    * of them, each standing alone on the table (at most size_disagreement_max_surrounded, in
+    * [0, 1], of the pixels around its surface hold something else) and so measured whole,
+    * agree on no size, two of them differing on every edge: the same print on different
+    * products (not in the paper; SizeDisagreementFilter). Needs the organized frame.
+    */
+  ///@{
+  bool remove_disagreeing_sizes = true;
+  float size_disagreement_max_surrounded = 0.05f;
+  int size_disagreement_min_copies = 3;
+  ///@}
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the
     * paper; pruneUnexplainedObservations()): a keypoint farther than
     * observation_max_residual (metres, > 0; the paper's inlier threshold) from where the pose
