@@ -51,8 +51,12 @@ SizeDisagreementFilter::filter (ObjectModels& models, std::size_t& removed) cons
     PCL_ERROR ("[mid::SizeDisagreementFilter::filter] %s.\n", why.c_str());
     return false;
   }
+  const bool any_judged =
+      std::any_of (models.begin(), models.end(), [this] (const ObjectModel& model) {
+        return static_cast<int> (model.instances.size()) >= min_copies_;
+      });
   Eigen::Vector4f plane;
-  if (models.empty() || !fitPlane (plane))
+  if (!any_judged || !fitPlane (plane))
     return true;
   std::vector<InstanceExtents> extents;
   if (!measureBoxes (models, plane, extents))
