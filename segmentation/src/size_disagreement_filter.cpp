@@ -5,6 +5,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace mid {
@@ -30,7 +31,7 @@ agreeOnNoSize (const InstanceExtents& boxes, const SizeAgreement& agree)
 } // namespace
 
 std::string
-SizeDisagreementFilter::problem (const ObjectModels& models) const
+SizeDisagreementFilter::inputProblem (const ObjectModels& models) const
 {
   std::string problem = measurementProblem (models);
   if (problem.empty() &&
@@ -47,7 +48,7 @@ bool
 SizeDisagreementFilter::filter (ObjectModels& models, std::size_t& removed) const
 {
   removed = 0;
-  if (const std::string why = problem (models); !why.empty()) {
+  if (const std::string why = inputProblem (models); !why.empty()) {
     PCL_ERROR ("[mid::SizeDisagreementFilter::filter] %s.\n", why.c_str());
     return false;
   }
@@ -62,11 +63,12 @@ SizeDisagreementFilter::filter (ObjectModels& models, std::size_t& removed) cons
   if (!measureBoxes (models, plane, extents))
     return false;
   const SizeAgreement agree = agreement();
-  // A box fitted to no surface has no pixel around it: a share of 1, not alone.
+  // A box fitted to no surface (an instance without observations) stands nowhere.
   const auto standsAlone = [&] (const InstanceExtent& box) {
-    return detail::surroundedShare (
+    return !box.surface.empty() &&
+           detail::surroundedShare (
                *surface_.organized, plane, box, 2.0f * plane_tolerance_) <=
-           max_surrounded_share_;
+               max_surrounded_share_;
   };
   ObjectModels kept;
   for (std::size_t m = 0; m < models.size(); ++m) {

@@ -470,11 +470,13 @@ TEST (MultiInstanceDiscovery,
   discovery.setInputCloud (colour);
   mid::DiscoveryParameters parameters;
   parameters.merge_by_size = false; // one size: this step would merge them by design
+  std::size_t rejected = 0; // clusters the verification rejected in the last run
   const auto objectsFound = [&] (float max_vivid_difference) {
     parameters.max_vivid_chromaticity_difference = max_vivid_difference;
     discovery.setParameters (parameters);
     mid::DiscoveryResult result;
     EXPECT_TRUE (discovery.discover (result));
+    rejected = result.rejected_clusters;
     std::set<std::set<int>> objects;
     for (const auto& model : result.models) {
       const auto boxes = boxesOf (scene, result, model);
@@ -484,10 +486,13 @@ TEST (MultiInstanceDiscovery,
   };
   EXPECT_EQ (objectsFound (0.15f), (std::set<std::set<int>>{{0, 1}, {2, 3}}));
   EXPECT_EQ (objectsFound (2.0f), (std::set<std::set<int>>{{0, 1, 2, 3}}));
-  // The clusters' verification alone (the guided searches off) tells the inks apart too.
+  // Without the guided searches too: the clusters' verification rejects the clusters that join
+  // the two inks (and the look check of what joins a model refuses the merges).
   parameters.guided_search = parameters.box_search = false;
   EXPECT_EQ (objectsFound (0.15f), (std::set<std::set<int>>{{0, 1}, {2, 3}}));
+  const std::size_t rejected_by_ink = rejected;
   EXPECT_EQ (objectsFound (2.0f), (std::set<std::set<int>>{{0, 1, 2, 3}}));
+  EXPECT_GT (rejected_by_ink, rejected);
 }
 
 TEST (MultiInstanceDiscovery, FindsNothingWhereNothingRepeats)

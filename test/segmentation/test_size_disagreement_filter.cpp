@@ -115,31 +115,44 @@ TEST (SizeDisagreementFilter, KeepsAModelWhoseBoxesDifferInOneEdgeOnly)
 {
   // Three boxes of one cross-section and three lengths: no two agree, but none differs from
   // another on every edge, as one box measured whole, joined end to end or hidden at one end.
+  // Box 3, of size B, differs from box 0 on every edge.
   const Boxes scene ({restingBox (kApplePrint, -0.26, -0.14, 10.0, {0.12, 0.09, 0.04}),
                       restingBox (kApplePrint, 0.0, -0.14, -20.0, {0.16, 0.09, 0.04}),
-                      restingBox (kApplePrint, 0.26, -0.14, 0.0, {0.20, 0.09, 0.04})});
+                      restingBox (kApplePrint, 0.26, -0.14, 0.0, {0.20, 0.09, 0.04}),
+                      restingBox (kSoyPrint, 0.0, 0.14, 30.0, kSizeB)});
   mid::ObjectModels models = {scene.modelOf ({0, 1, 2})};
   std::size_t removed = 1;
   ASSERT_TRUE (filterFor (scene).filter (models, removed));
   EXPECT_EQ (removed, 0u);
   EXPECT_EQ (models.size(), 1u);
+  // The control: with box 3 for box 2 the same copies are judged, and the model goes.
+  models = {scene.modelOf ({0, 1, 3})};
+  ASSERT_TRUE (filterFor (scene).filter (models, removed));
+  EXPECT_EQ (removed, 1u);
+  EXPECT_TRUE (models.empty());
 }
 
 TEST (SizeDisagreementFilter, KeepsAModelWithAnInstanceWithoutSurface)
 {
-  // A fourth instance that observes no keypoint has no surface to stand alone on.
+  // A fourth instance that observes no keypoint has no surface to stand alone on, whatever
+  // share of surroundings is allowed.
   const Boxes scene (twoRows (false));
   mid::ObjectModel three = scene.modelOf ({0, 1, 2});
   mid::ModelInstance unobserved = three.instances[0];
   unobserved.keypoints.clear();
   unobserved.landmarks.clear();
-  mid::ObjectModels models = {three};
-  models[0].instances.push_back (unobserved);
+  mid::ObjectModel four = three;
+  four.instances.push_back (unobserved);
+  mid::SizeDisagreementFilter anything = filterFor (scene);
+  anything.setMaxSurroundedShare (1.0f);
   std::size_t removed = 1;
-  ASSERT_TRUE (filterFor (scene).filter (models, removed));
-  EXPECT_EQ (removed, 0u);
-  EXPECT_EQ (models.size(), 1u);
-  models = {three}; // the control: without it, the model goes
+  for (const auto& filter : {filterFor (scene), anything}) {
+    mid::ObjectModels models = {four};
+    ASSERT_TRUE (filter.filter (models, removed));
+    EXPECT_EQ (removed, 0u);
+    EXPECT_EQ (models.size(), 1u);
+  }
+  mid::ObjectModels models = {three}; // the control: without it, the model goes
   ASSERT_TRUE (filterFor (scene).filter (models, removed));
   EXPECT_EQ (removed, 1u);
 }

@@ -204,7 +204,7 @@ boxOfSize (const Eigen::Vector3f& size,
 
 /** \brief What the steps that measure the boxes of models on the support plane and compare
   * their sizes share (ModelSizeMerger, ModelSizeSplitter, ModelBoxExtender,
-  * SizeInstanceSearch, ModelBoxPruning, InterpenetrationFilter): the
+  * SizeInstanceSearch, ModelBoxPruning, InterpenetrationFilter, SizeDisagreementFilter): the
   * SupportPlaneMeasurement, and when two sizes agree.
   */
 class ModelSizeMeasurement : public SupportPlaneMeasurement

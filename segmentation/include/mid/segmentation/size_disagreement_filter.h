@@ -20,19 +20,20 @@ namespace mid {
   *
   * 1. the surfaces of all instances of all models grow at once from their keypoints, and a box
   *    is fitted to each (measureInstanceBoxes());
-  * 2. the model takes part when it has at least `min_copies` instances, each standing alone
-  *    (an instance without a surface is not): at most `max_surrounded_share` of the pixels around its surface
-  *    hold something else than the plane and its own box (nothing leans on it, nothing lies
-  *    beside it, nothing hides it);
+  * 2. the model takes part when it has at least `min_copies` instances, each standing alone:
+  *    at most `max_surrounded_share` of the pixels around its surface hold something else
+  *    than the plane and its own box (nothing leans on it, nothing lies beside it, nothing
+  *    hides it); an instance without a surface (no observations) does not stand alone;
   * 3. it is removed when no two of its boxes agree in size (the size tolerances) and at least
   *    two of them differ on every edge (SizeAgreement::differOnEveryEdge()): boxes of
   *    different products, not one box measured a little off.
   *
-  * On the benchmark (four seeds, 440 frames) the rule holds for two models, both in frames in
-  * which nothing repeats, and for no true one; with two copies instead of three or a looser
-  * share (0.1), true models of copies measured joined in piles qualify too (doc/benchmark.md,
-  * session 43). Frames without a support plane are left as they are. Deterministic (the
-  * plane's hypotheses are drawn with a fixed seed).
+  * On the benchmark (four datasets, 440 frames) the rule holds for two models, both in frames
+  * in which nothing repeats, and for no true one; with two copies and a 10 % bound, true pairs
+  * of copies measured joined in piles qualify too (doc/model_building.md, session 43). The
+  * sizes agree by the tolerances of ModelSizeMeasurement; its setMinAgreeing() plays no part
+  * here (a value below 1 is still refused). Frames without a support plane are left as they
+  * are. Deterministic (the plane's hypotheses are drawn with a fixed seed).
   */
 class SizeDisagreementFilter : public ModelSizeMeasurement
 {
@@ -81,7 +82,7 @@ public:
 private:
   /** \brief What is wrong with the input or the parameters; empty if nothing. */
   std::string
-  problem (const ObjectModels& models) const;
+  inputProblem (const ObjectModels& models) const;
 
   float max_surrounded_share_ = 0.05f; ///< see setMaxSurroundedShare()
   int min_copies_ = 3;                 ///< see setMinCopies()
