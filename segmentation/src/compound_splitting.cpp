@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <utility>
 
 namespace mid {
 
@@ -29,6 +30,12 @@ constexpr double kMinSharedFraction = 0.25;
 constexpr std::size_t kMinStraddlingPoints = 3;
 constexpr double kMinStraddlingFraction = 0.2;
 constexpr float kMaxStraddleDistance = 0.015f;
+
+/** Fewest keypoints of a group on one side of the surface gaps, and fewest triplets of a part
+  * of a cluster split at the gaps.
+  */
+constexpr std::size_t kMinGroupPoints = 3;
+constexpr std::size_t kMinPartTriplets = 3;
 
 /** Keypoints closer than this (metres) to the plane between two half-turn copies take no
   * side (their triplets are dropped).
@@ -255,6 +262,41 @@ straddles (const std::map<pcl::index_t, NearestSide>& sides)
          static_cast<double> (close[1]) >= needed;
 }
 
+/** Group of every keypoint of `points`: keypoints joined by links over which the surface does
+  * not fall behind (single linkage), numbered from 0 in the order of their first keypoint;
+  * groups of fewer than kMinGroupPoints keypoints get -1. Also returns how many groups there
+  * are.
+  */
+std::pair<std::map<pcl::index_t, int>, int>
+surfaceGroups (const pcl::Indices& points, const KeypointSurface& surface)
+{
+  std::vector<std::size_t> parent (points.size());
+  std::iota (parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&parent] (std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      if (root (i) != root (j) &&
+          !surfaceDropsBetween (surface, points[i], points[j], kMinSurfaceGapDrop))
+        parent[root (i)] = root (j);
+  std::vector<std::size_t> size (points.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    ++size[root (i)];
+  std::map<std::size_t, int> number;
+  std::map<pcl::index_t, int> groups;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t r = root (i);
+    int group = -1;
+    if (size[r] >= kMinGroupPoints)
+      group = number.emplace (r, static_cast<int> (number.size())).first->second;
+    groups[points[i]] = group;
+  }
+  return {groups, static_cast<int> (number.size())};
+}
+
 } // namespace
 
 std::vector<TripletOrientation>
@@ -341,6 +383,60 @@ splitStraddlingCluster (const TripletCluster& cluster,
     return {};
   if (parts[0].empty() || parts[1].empty())
     return whole;
+  return parts;
+}
+
+std::vector<std::vector<std::size_t>>
+splitClusterAtSurfaceGaps (const TripletCluster& cluster,
+                           const TripletMatches& triplets,
+                           const KeypointSurface& surface)
+{
+  std::vector<std::size_t> all (cluster.triplets.size());
+  std::iota (all.begin(), all.end(), std::size_t{0});
+  std::vector<std::vector<std::size_t>> whole{all};
+  const auto source_grouping = surfaceGroups (cluster.source_indices, surface);
+  const auto target_grouping = surfaceGroups (cluster.target_indices, surface);
+  const std::map<pcl::index_t, int>& sources = source_grouping.first;
+  const std::map<pcl::index_t, int>& targets = target_grouping.first;
+  const int source_groups = source_grouping.second,
+            target_groups = target_grouping.second;
+  if (source_groups < 2 && target_groups < 2)
+    return whole;
+
+  // The part of each (source group, target group) pair, in the order of its first triplet.
+  std::map<std::pair<int, int>, std::size_t> part_of;
+  std::vector<std::vector<std::size_t>> parts;
+  const auto groupOf = [] (const std::map<pcl::index_t, int>& groups, pcl::index_t k) {
+    const auto found = groups.find (k);
+    return found == groups.end() ? -1 : found->second;
+  };
+  for (std::size_t m = 0; m < cluster.triplets.size(); ++m) {
+    const bool reversed = cluster.reversed[m];
+    const auto& correspondences = triplets[cluster.triplets[m]].correspondences;
+    const int s = groupOf (sources,
+                           detail::sourceOf (correspondences.front(), reversed)),
+              t = groupOf (targets,
+                           detail::targetOf (correspondences.front(), reversed));
+    const bool one_pair =
+        s >= 0 && t >= 0 &&
+        std::all_of (
+            correspondences.begin(), correspondences.end(), [&] (const auto& c) {
+              return groupOf (sources, detail::sourceOf (c, reversed)) == s &&
+                     groupOf (targets, detail::targetOf (c, reversed)) == t;
+            });
+    if (!one_pair)
+      continue;
+    const auto entry = part_of.emplace (std::make_pair (s, t), parts.size());
+    if (entry.second)
+      parts.emplace_back();
+    parts[entry.first->second].push_back (m);
+  }
+  parts.erase (std::remove_if (parts.begin(),
+                               parts.end(),
+                               [] (const std::vector<std::size_t>& part) {
+                                 return part.size() < kMinPartTriplets;
+                               }),
+               parts.end());
   return parts;
 }
 

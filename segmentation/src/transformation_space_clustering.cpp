@@ -257,10 +257,34 @@ orientHalfTurns (const TripletMatches& triplets,
   }
 }
 
+/** Replace every cluster whose point sets lie on objects with a gap between them by its parts
+  * (splitClusterAtSurfaceGaps()).
+  */
+void
+splitAtSurfaceGaps (const TripletMatches& triplets,
+                    const KeypointCloud& keypoints,
+                    const KeypointSurface& surface,
+                    TripletClusters& clusters)
+{
+  TripletClusters split;
+  split.reserve (clusters.size());
+  for (auto& cluster : clusters) {
+    const auto parts = splitClusterAtSurfaceGaps (cluster, triplets, surface);
+    if (parts.size() == 1 && parts.front().size() == cluster.triplets.size()) {
+      split.push_back (std::move (cluster));
+      continue;
+    }
+    for (const auto& members : parts)
+      split.push_back (makePart (cluster, members, triplets, keypoints));
+  }
+  clusters.swap (split);
+}
+
 /** Make every cluster's point sets lie on one copy each (compound_splitting.h): clusters
   * straddling another are split, half turns oriented (with the point sets of the others as
   * anchors, which must lie on one copy: hence straddlers first), then the oriented half turns
-  * may reveal more straddlers.
+  * may reveal more straddlers; last, given the surface, clusters whose sets lie on objects
+  * with a gap between them are split there.
   */
 void
 splitCompounds (const TripletMatches& triplets,
@@ -271,6 +295,8 @@ splitCompounds (const TripletMatches& triplets,
   splitStraddlers (triplets, keypoints, clusters);
   orientHalfTurns (triplets, keypoints, surface, clusters);
   splitStraddlers (triplets, keypoints, clusters);
+  if (surface)
+    splitAtSurfaceGaps (triplets, keypoints, *surface, clusters);
 }
 
 /** True if most of `other`'s triplets, used reversed, agree with `cluster`'s pose within eps:

@@ -14,12 +14,14 @@ namespace test {
   * \param[in] triplets the triplet matches between them
   * \param[in] split_chains TransformationSpaceClustering::setSplitChains()
   * \param[in] split_compounds TransformationSpaceClustering::setSplitCompounds()
+  * \param[in] surface TransformationSpaceClustering::setKeypointSurface(), or null for none
   */
 inline TripletClusters
 clusterTriplets (const KeypointCloud::ConstPtr& keypoints,
                  const std::shared_ptr<const TripletMatches>& triplets,
                  bool split_chains = true,
-                 bool split_compounds = true)
+                 bool split_compounds = true,
+                 const KeypointSurface* surface = nullptr)
 {
   TransformationSpaceClustering clustering;
   clustering.setInputCloud (keypoints);
@@ -28,6 +30,8 @@ clusterTriplets (const KeypointCloud::ConstPtr& keypoints,
   clustering.setMinClusterSize (5);
   clustering.setSplitChains (split_chains);
   clustering.setSplitCompounds (split_compounds);
+  if (surface)
+    clustering.setKeypointSurface (*surface);
   std::vector<pcl::Correspondences> groups;
   clustering.cluster (groups);
   return clustering.getClusters();

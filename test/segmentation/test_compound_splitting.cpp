@@ -498,3 +498,177 @@ TEST (CompoundSplitting, TheClustererSplitsAPairOfPairs)
   EXPECT_EQ (clusteredLinks (scene),
              (Links{{{0}, {1}}, {{2}, {3}}, {{0}, {2}}, {{1}, {3}}}));
 }
+
+namespace {
+
+/** Four copies in a row along x, 12 cm apart, 30 cm below the camera (seen from above at
+  * about 18 degrees), and what the camera sees of them.
+  */
+struct RowApart
+{
+  RowApart()
+  {
+    for (int k = 0; k < 4; ++k)
+      scene.add (mid::test::rigidMotion (
+          Eigen::Vector3f (step * static_cast<float> (k) - 0.18f, 0.3f, 0.9f)));
+  }
+
+  /** The keypoints seen on `plates` (at the copies' upper face, y = 29.5 cm) above a floor
+    * 5 cm lower.
+    */
+  mid::KeypointSurface
+  surface (const std::vector<mid::test::Plate>& plates) const
+  {
+    mid::KeypointSurface seen{mid::test::renderPlates (plates, 0.345f), {}};
+    for (const auto& k : *scene.keypoints)
+      seen.keypoint_pixels.push_back (
+          mid::test::plateSurfacePixel (k.getVector3fMap()));
+    return seen;
+  }
+
+  /** Each copy's upper face, 1.5 cm wider on each side than its keypoints (every keypoint's
+    * pixel shows its own copy; 3 cm of floor between neighbours).
+    */
+  mid::KeypointSurface
+  copiesApart () const
+  {
+    std::vector<mid::test::Plate> plates;
+    for (int k = 0; k < 4; ++k) {
+      const float x = step * static_cast<float> (k) - 0.18f;
+      plates.push_back ({x - 0.01f, x + 0.08f, 0.75f, 1.05f, 0.295f});
+    }
+    return surface (plates);
+  }
+
+  /** One face under all four: the same keypoints on a single object. */
+  mid::KeypointSurface
+  oneObject () const
+  {
+    return surface ({{-0.19f, 0.26f, 0.75f, 1.05f, 0.295f}});
+  }
+
+  /** The copies each part's sources and targets lie on. */
+  std::set<std::pair<std::set<int>, std::set<int>>>
+  partCopies (const mid::TripletCluster& cluster,
+              const std::vector<std::vector<std::size_t>>& parts) const
+  {
+    std::set<std::pair<std::set<int>, std::set<int>>> found;
+    for (const auto& part : parts) {
+      std::pair<std::set<int>, std::set<int>> copies;
+      for (const std::size_t m : part)
+        for (const auto& c : (*scene.triplets)[cluster.triplets[m]].correspondences) {
+          const bool reversed = cluster.reversed[m];
+          copies.first.insert (
+              Copies::copyOf (reversed ? c.index_match : c.index_query));
+          copies.second.insert (
+              Copies::copyOf (reversed ? c.index_query : c.index_match));
+        }
+      found.insert (copies);
+    }
+    return found;
+  }
+
+  static constexpr float step = 0.12f;
+  Copies scene;
+};
+
+} // namespace
+
+TEST (CompoundSplitting, SplitsEverySecondCopyOfARowApartAtTheSurfaceGaps)
+{
+  // Copies 0, 1 -> 2, 3: one pose, each point set on two copies with the floor between them.
+  RowApart row;
+  mid::TripletCluster pairs;
+  row.scene.link (0, 2, pairs);
+  row.scene.link (1, 3, pairs);
+  row.scene.finish (pairs);
+  ASSERT_EQ (copiesOf (pairs.source_indices), (std::set<int>{0, 1}));
+  const mid::KeypointSurface apart = row.copiesApart();
+  ASSERT_TRUE (mid::isValidKeypointSurface (apart, row.scene.keypoints->size()));
+
+  const auto parts = mid::splitClusterAtSurfaceGaps (pairs, *row.scene.triplets, apart);
+  ASSERT_EQ (parts.size(), 2u);
+  EXPECT_EQ (parts[0].size() + parts[1].size(), pairs.triplets.size());
+  EXPECT_EQ (
+      row.partCopies (pairs, parts),
+      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+
+  // The same keypoints on one object: no gap, nothing is cut.
+  const auto whole =
+      mid::splitClusterAtSurfaceGaps (pairs, *row.scene.triplets, row.oneObject());
+  ASSERT_EQ (whole.size(), 1u);
+  EXPECT_EQ (whole.front().size(), pairs.triplets.size());
+
+  // A cluster between two single copies is left whole.
+  mid::TripletCluster single;
+  row.scene.link (0, 2, single);
+  row.scene.finish (single);
+  const auto single_parts =
+      mid::splitClusterAtSurfaceGaps (single, *row.scene.triplets, apart);
+  ASSERT_EQ (single_parts.size(), 1u);
+  EXPECT_EQ (single_parts.front().size(), single.triplets.size());
+}
+
+TEST (CompoundSplitting, DropsAClusterWhoseTrianglesSpanCopiesApart)
+{
+  // Every triangle has a corner on each copy of a pair: nothing of it lies on one copy. A few
+  // whole triangles (fewer than three) do not make a part either.
+  RowApart row;
+  mid::TripletCluster across;
+  row.scene.link (0, 2, across, {1, 3});
+  row.scene.finish (across);
+  ASSERT_TRUE (
+      mid::isValidKeypointSurface (row.copiesApart(), row.scene.keypoints->size()));
+  EXPECT_TRUE (
+      mid::splitClusterAtSurfaceGaps (across, *row.scene.triplets, row.copiesApart())
+          .empty());
+
+  mid::TripletCluster mostly_across = across;
+  const auto add_whole = [&row, &mostly_across] (int first) {
+    mostly_across.triplets.push_back (row.scene.triplets->size());
+    mostly_across.reversed.push_back (false);
+    mid::TripletMatch whole;
+    for (int c = 0; c < 3; ++c)
+      whole.correspondences[static_cast<std::size_t> (c)] = pcl::Correspondence (
+          Copies::index (0, first + c), Copies::index (2, first + c), 0.0f);
+    row.scene.triplets->push_back (whole);
+    row.scene.finish (mostly_across);
+  };
+  add_whole (0);
+  add_whole (1);
+  EXPECT_TRUE (mid::splitClusterAtSurfaceGaps (
+                   mostly_across, *row.scene.triplets, row.copiesApart())
+                   .empty());
+  // With a third whole triangle, that part stays, alone.
+  add_whole (2);
+  const auto parts = mid::splitClusterAtSurfaceGaps (
+      mostly_across, *row.scene.triplets, row.copiesApart());
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front(),
+             (std::vector<std::size_t>{across.triplets.size(),
+                                       across.triplets.size() + 1,
+                                       across.triplets.size() + 2}));
+}
+
+TEST (CompoundSplitting, TheClustererSplitsEverySecondCopyOfARowApartGivenTheSurface)
+{
+  // No cluster links neighbours (their triplets lie elsewhere on the print, or were not
+  // found): only the surface tells the copies of each point set apart.
+  RowApart row;
+  mid::TripletCluster unused;
+  row.scene.link (0, 2, unused);
+  row.scene.link (1, 3, unused);
+  const auto links = [&row] (const mid::KeypointSurface* surface) {
+    Links found;
+    for (const auto& cluster : mid::test::clusterTriplets (
+             row.scene.keypoints, row.scene.triplets, true, true, surface))
+      found.emplace (copiesOf (cluster.source_indices),
+                     copiesOf (cluster.target_indices));
+    return found;
+  };
+  EXPECT_EQ (links (nullptr), (Links{{{0, 1}, {2, 3}}}));
+  const mid::KeypointSurface apart = row.copiesApart();
+  EXPECT_EQ (links (&apart), (Links{{{0}, {2}}, {{1}, {3}}}));
+  const mid::KeypointSurface one_object = row.oneObject();
+  EXPECT_EQ (links (&one_object), (Links{{{0, 1}, {2, 3}}}));
+}

@@ -170,8 +170,10 @@ public:
   /** \brief Make each cluster's two point sets lie on one copy each: a cluster whose pose is a
     * half turn swapping two touching copies is oriented one way (orientHalfTurnCluster()), and
     * a cluster with a point set spanning the two copies of another cluster is split in two
-    * (splitStraddlingCluster()), or removed when none of its triplets lies on one copy; only
-    * for triplets within one frame, after the chains. Default true; false gives the paper's
+    * (splitStraddlingCluster()), or removed when none of its triplets lies on one copy; given
+    * the keypoint surface, a cluster whose point sets lie on objects with a gap between them
+    * is split there (splitClusterAtSurfaceGaps()); only for triplets within one frame, after
+    * the chains. Default true; false gives the paper's
     * behaviour, whose models then cover two touching copies.
     */
   ///@{
