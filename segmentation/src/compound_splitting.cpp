@@ -1,4 +1,5 @@
 #include "cluster_sets.h"
+#include "disjoint_sets.h"
 
 #include <mid/segmentation/compound_splitting.h>
 
@@ -36,6 +37,13 @@ constexpr float kMaxStraddleDistance = 0.015f;
   */
 constexpr std::size_t kMinGroupPoints = 3;
 constexpr std::size_t kMinPartTriplets = 3;
+
+/** Nearest keypoints (3D) each keypoint of a point set is first linked to when grouping it by
+  * the surface's gaps; more pieces than kMaxSurfaceGroups left after that leave the set
+  * unjudged (a walk per pair of pieces is the cost of joining them).
+  */
+constexpr std::size_t kGroupNeighbours = 8;
+constexpr std::size_t kMaxSurfaceGroups = 16;
 
 /** Keypoints closer than this (metres) to the plane between two half-turn copies take no
   * side (their triplets are dropped).
@@ -262,39 +270,104 @@ straddles (const std::map<pcl::index_t, NearestSide>& sides)
          static_cast<double> (close[1]) >= needed;
 }
 
-/** Group of every keypoint of `points`: keypoints joined by links over which the surface does
-  * not fall behind (single linkage), numbered from 0 in the order of their first keypoint;
-  * groups of fewer than kMinGroupPoints keypoints get -1. Also returns how many groups there
-  * are.
+/** The groups of a point set that the surface's gaps separate (surfaceGroups()). */
+struct SurfaceGroups
+{
+  /** Group of each keypoint, from 0; -1 for a keypoint without depth at its pixel or in a
+    * group of fewer than kMinGroupPoints keypoints.
+    */
+  std::map<pcl::index_t, int> group_of;
+  /** How many groups (of kMinGroupPoints keypoints or more); 0 when the set is not judged
+    * (no such group, or more than kMaxSurfaceGroups pieces).
+    */
+  int count = 0;
+};
+
+/** Groups of a point set: keypoints joined by links over which the surface does not fall
+  * behind (single linkage). Each keypoint is linked to its kGroupNeighbours nearest ones (3D);
+  * the groups still apart are then joined, closest first, where the surface does not fall
+  * behind their closest pair across, which costs a walk per pair of groups: a set falling
+  * into more than kMaxSurfaceGroups pieces is not judged. Groups are numbered in the order of
+  * their first keypoint.
   */
-std::pair<std::map<pcl::index_t, int>, int>
+SurfaceGroups
 surfaceGroups (const pcl::Indices& points, const KeypointSurface& surface)
 {
-  std::vector<std::size_t> parent (points.size());
-  std::iota (parent.begin(), parent.end(), std::size_t{0});
-  const auto root = [&parent] (std::size_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (std::size_t j = i + 1; j < points.size(); ++j)
-      if (root (i) != root (j) &&
-          !surfaceDropsBetween (surface, points[i], points[j], kMinSurfaceGapDrop))
-        parent[root (i)] = root (j);
-  std::vector<std::size_t> size (points.size(), 0);
-  for (std::size_t i = 0; i < points.size(); ++i)
-    ++size[root (i)];
-  std::map<std::size_t, int> number;
-  std::map<pcl::index_t, int> groups;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::size_t r = root (i);
-    int group = -1;
-    if (size[r] >= kMinGroupPoints)
-      group = number.emplace (r, static_cast<int> (number.size())).first->second;
-    groups[points[i]] = group;
+  // Keypoints with depth at their pixel (the positions the surface test walks between).
+  std::vector<pcl::index_t> seen;
+  std::vector<Eigen::Vector3f> at;
+  for (const pcl::index_t k : points) {
+    const auto& p = (*surface.organized)[static_cast<std::size_t> (
+        surface.keypoint_pixels[static_cast<std::size_t> (k)])];
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
+      seen.push_back (k);
+      at.push_back (p.getVector3fMap());
+    }
   }
-  return {groups, static_cast<int> (number.size())};
+  const std::size_t n = seen.size();
+  detail::DisjointSets sets (n);
+  const auto join = [&] (std::size_t a, std::size_t b) {
+    if (sets.find (a) != sets.find (b) &&
+        !surfaceDropsBetween (surface, seen[a], seen[b], kMinSurfaceGapDrop))
+      sets.unite (a, b);
+  };
+  std::vector<std::size_t> order (n);
+  for (std::size_t a = 0; a < n; ++a) {
+    std::iota (order.begin(), order.end(), std::size_t{0});
+    const std::size_t nearest = std::min (n, kGroupNeighbours + 1);
+    std::partial_sort (order.begin(),
+                       order.begin() + static_cast<std::ptrdiff_t> (nearest),
+                       order.end(),
+                       [&] (std::size_t b, std::size_t c) {
+                         return (at[b] - at[a]).squaredNorm() <
+                                (at[c] - at[a]).squaredNorm();
+                       });
+    for (std::size_t m = 0; m < nearest; ++m)
+      if (order[m] != a)
+        join (a, order[m]);
+  }
+  SurfaceGroups groups;
+  for (const pcl::index_t k : points)
+    groups.group_of[k] = -1;
+  // The pieces left, numbered; joined, closest first, across their closest pair.
+  std::map<std::size_t, std::size_t> piece_of_root;
+  std::vector<std::size_t> piece (n);
+  for (std::size_t a = 0; a < n; ++a)
+    piece[a] =
+        piece_of_root.emplace (sets.find (a), piece_of_root.size()).first->second;
+  const std::size_t pieces = piece_of_root.size();
+  if (pieces > kMaxSurfaceGroups)
+    return groups;
+  using Pair = std::pair<float, std::pair<std::size_t, std::size_t>>;
+  std::vector<Pair> closest (pieces * pieces,
+                             {std::numeric_limits<float>::infinity(), {0, 0}});
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (piece[a] == piece[b])
+        continue;
+      Pair& best = closest[std::min (piece[a], piece[b]) * pieces +
+                           std::max (piece[a], piece[b])];
+      const float d = (at[a] - at[b]).squaredNorm();
+      if (d < best.first)
+        best = {d, {a, b}};
+    }
+  std::sort (closest.begin(), closest.end());
+  for (const Pair& pair : closest)
+    if (std::isfinite (pair.first))
+      join (pair.second.first, pair.second.second);
+
+  std::vector<std::size_t> size (n, 0);
+  for (std::size_t a = 0; a < n; ++a)
+    ++size[sets.find (a)];
+  std::map<std::size_t, int> number;
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t root = sets.find (a);
+    if (size[root] >= kMinGroupPoints)
+      groups.group_of[seen[a]] =
+          number.emplace (root, static_cast<int> (number.size())).first->second;
+  }
+  groups.count = static_cast<int> (number.size());
+  return groups;
 }
 
 } // namespace
@@ -394,14 +467,15 @@ splitClusterAtSurfaceGaps (const TripletCluster& cluster,
   std::vector<std::size_t> all (cluster.triplets.size());
   std::iota (all.begin(), all.end(), std::size_t{0});
   std::vector<std::vector<std::size_t>> whole{all};
-  const auto source_grouping = surfaceGroups (cluster.source_indices, surface);
-  const auto target_grouping = surfaceGroups (cluster.target_indices, surface);
-  const std::map<pcl::index_t, int>& sources = source_grouping.first;
-  const std::map<pcl::index_t, int>& targets = target_grouping.first;
-  const int source_groups = source_grouping.second,
-            target_groups = target_grouping.second;
-  if (source_groups < 2 && target_groups < 2)
+  const SurfaceGroups source_groups = surfaceGroups (cluster.source_indices, surface);
+  const SurfaceGroups target_groups = surfaceGroups (cluster.target_indices, surface);
+  // A set that is not judged (no group of kMinGroupPoints keypoints, or too many pieces) gives
+  // no side to any triplet: the cluster stays whole.
+  if ((source_groups.count < 2 && target_groups.count < 2) ||
+      source_groups.count == 0 || target_groups.count == 0)
     return whole;
+  const std::map<pcl::index_t, int>& sources = source_groups.group_of;
+  const std::map<pcl::index_t, int>& targets = target_groups.group_of;
 
   // The part of each (source group, target group) pair, in the order of its first triplet.
   std::map<std::pair<int, int>, std::size_t> part_of;

@@ -90,6 +90,29 @@ makePart (const TripletCluster& cluster,
   return part;
 }
 
+/** Replace clusters[c] by its parts[c] (positions in its triplets): a single part holding
+  * every triplet leaves it as it is, no part removes it.
+  */
+void
+replaceByParts (const std::vector<std::vector<std::vector<std::size_t>>>& parts,
+                const TripletMatches& triplets,
+                const KeypointCloud& keypoints,
+                TripletClusters& clusters)
+{
+  TripletClusters split;
+  split.reserve (clusters.size());
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    if (parts[c].size() == 1 &&
+        parts[c].front().size() == clusters[c].triplets.size()) {
+      split.push_back (std::move (clusters[c]));
+      continue;
+    }
+    for (const auto& members : parts[c])
+      split.push_back (makePart (clusters[c], members, triplets, keypoints));
+  }
+  clusters.swap (split);
+}
+
 /** Largest rotation of a cluster that splitChainCluster() may split: rows of copies are
   * related by translations.
   */
@@ -145,18 +168,7 @@ splitChains (const TripletMatches& triplets,
       parts[c] = splitChainCluster (
           clusters[c], triplets, keypoints, kMaxChainRotation, *found, surface);
   }
-  TripletClusters split;
-  split.reserve (clusters.size());
-  for (std::size_t c = 0; c < clusters.size(); ++c) {
-    if (parts[c].size() == 1 &&
-        parts[c].front().size() == clusters[c].triplets.size()) {
-      split.push_back (clusters[c]);
-      continue;
-    }
-    for (const auto& members : parts[c])
-      split.push_back (makePart (clusters[c], members, triplets, keypoints));
-  }
-  clusters.swap (split);
+  replaceByParts (parts, triplets, keypoints, clusters);
 }
 
 /** Most splits of straddling clusters in one pass (a frame has a few; a bound on the work). */
@@ -266,18 +278,11 @@ splitAtSurfaceGaps (const TripletMatches& triplets,
                     const KeypointSurface& surface,
                     TripletClusters& clusters)
 {
-  TripletClusters split;
-  split.reserve (clusters.size());
-  for (auto& cluster : clusters) {
-    const auto parts = splitClusterAtSurfaceGaps (cluster, triplets, surface);
-    if (parts.size() == 1 && parts.front().size() == cluster.triplets.size()) {
-      split.push_back (std::move (cluster));
-      continue;
-    }
-    for (const auto& members : parts)
-      split.push_back (makePart (cluster, members, triplets, keypoints));
-  }
-  clusters.swap (split);
+  std::vector<std::vector<std::vector<std::size_t>>> parts;
+  parts.reserve (clusters.size());
+  for (const auto& cluster : clusters)
+    parts.push_back (splitClusterAtSurfaceGaps (cluster, triplets, surface));
+  replaceByParts (parts, triplets, keypoints, clusters);
 }
 
 /** Make every cluster's point sets lie on one copy each (compound_splitting.h): clusters

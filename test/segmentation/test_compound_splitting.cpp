@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 #include <set>
@@ -526,25 +527,32 @@ struct RowApart
     return seen;
   }
 
-  /** Each copy's upper face, 1.5 cm wider on each side than its keypoints (every keypoint's
-    * pixel shows its own copy; 3 cm of floor between neighbours).
+  /** The upper face under copies first to last, 1.5 cm wider on each side than their
+    * keypoints (every keypoint's pixel shows its own copy; 3 cm of floor between neighbours
+    * on two faces).
     */
+  static mid::test::Plate
+  face (int first, int last)
+  {
+    return {step * static_cast<float> (first) - 0.19f,
+            step * static_cast<float> (last) - 0.10f,
+            0.75f,
+            1.05f,
+            0.295f};
+  }
+
+  /** Each copy on its own face. */
   mid::KeypointSurface
   copiesApart () const
   {
-    std::vector<mid::test::Plate> plates;
-    for (int k = 0; k < 4; ++k) {
-      const float x = step * static_cast<float> (k) - 0.18f;
-      plates.push_back ({x - 0.01f, x + 0.08f, 0.75f, 1.05f, 0.295f});
-    }
-    return surface (plates);
+    return surface ({face (0, 0), face (1, 1), face (2, 2), face (3, 3)});
   }
 
   /** One face under all four: the same keypoints on a single object. */
   mid::KeypointSurface
   oneObject () const
   {
-    return surface ({{-0.19f, 0.26f, 0.75f, 1.05f, 0.295f}});
+    return surface ({face (0, 3)});
   }
 
   /** The copies each part's sources and targets lie on. */
@@ -671,4 +679,73 @@ TEST (CompoundSplitting, TheClustererSplitsEverySecondCopyOfARowApartGivenTheSur
   EXPECT_EQ (links (&apart), (Links{{{0}, {2}}, {{1}, {3}}}));
   const mid::KeypointSurface one_object = row.oneObject();
   EXPECT_EQ (links (&one_object), (Links{{{0, 1}, {2, 3}}}));
+}
+
+TEST (CompoundSplitting, SplitsAtAGapThatOnlyOnePointSetShows)
+{
+  // Copies 2 and 3 on one face (one object to the surface), 0 and 1 apart: the sources tell
+  // the two pairs apart.
+  RowApart row;
+  mid::TripletCluster pairs;
+  row.scene.link (0, 2, pairs);
+  row.scene.link (1, 3, pairs);
+  row.scene.finish (pairs);
+  const auto parts = mid::splitClusterAtSurfaceGaps (
+      pairs,
+      *row.scene.triplets,
+      row.surface (
+          {RowApart::face (0, 0), RowApart::face (1, 1), RowApart::face (2, 3)}));
+  EXPECT_EQ (
+      row.partCopies (pairs, parts),
+      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+}
+
+TEST (CompoundSplitting, LeavesAClusterWithTwoKeypointsAcrossAGapWhole)
+{
+  // Copy 0 -> 2, and one triangle with two corners on copy 1 (apart): two keypoints make no
+  // group, so no set holds two and nothing is cut.
+  RowApart row;
+  mid::TripletCluster cluster;
+  row.scene.link (0, 2, cluster);
+  mid::TripletMatch stray;
+  for (int c = 0; c < 3; ++c)
+    stray.correspondences[static_cast<std::size_t> (c)] = pcl::Correspondence (
+        Copies::index (c == 0 ? 0 : 1, c), Copies::index (c == 0 ? 2 : 3, c), 0.0f);
+  cluster.triplets.push_back (row.scene.triplets->size());
+  cluster.reversed.push_back (false);
+  row.scene.triplets->push_back (stray);
+  row.scene.finish (cluster);
+  ASSERT_EQ (copiesOf (cluster.source_indices), (std::set<int>{0, 1}));
+  const auto parts =
+      mid::splitClusterAtSurfaceGaps (cluster, *row.scene.triplets, row.copiesApart());
+  ASSERT_EQ (parts.size(), 1u);
+  EXPECT_EQ (parts.front().size(), cluster.triplets.size());
+}
+
+TEST (CompoundSplitting, LeavesKeypointsWithoutDepthOutOfTheSurfaceGroups)
+{
+  // A keypoint of copy 0 whose pixel has no depth would show no drop towards any other: it
+  // takes no group, and its three triangles go; the split is the same.
+  RowApart row;
+  mid::TripletCluster pairs;
+  row.scene.link (0, 2, pairs);
+  row.scene.link (1, 3, pairs);
+  row.scene.finish (pairs);
+  mid::KeypointSurface surface = row.copiesApart();
+  auto holed = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*surface.organized);
+  const auto pixel =
+      static_cast<std::size_t> (surface.keypoint_pixels[Copies::index (0, 5)]);
+  (*holed)[pixel].x = (*holed)[pixel].y = (*holed)[pixel].z =
+      std::numeric_limits<float>::quiet_NaN();
+  surface.organized = holed;
+  ASSERT_TRUE (mid::isValidKeypointSurface (surface, row.scene.keypoints->size()));
+  const auto parts =
+      mid::splitClusterAtSurfaceGaps (pairs, *row.scene.triplets, surface);
+  EXPECT_EQ (
+      row.partCopies (pairs, parts),
+      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+  std::size_t kept = 0;
+  for (const auto& part : parts)
+    kept += part.size();
+  EXPECT_EQ (kept, pairs.triplets.size() - 3);
 }

@@ -105,23 +105,29 @@ splitStraddlingCluster (const TripletCluster& cluster,
   * straddling set; in a row of copies standing apart, the triplets linking every second copy
   * (copies 0, 1 -> 2, 3) often lie on other parts of the print than those of the neighbour
   * pairs. The surface tells the copies apart without them: two keypoints lie on one object
-  * unless the surface between them falls behind the segment joining them (surfaceDropsBetween()
-  * by kMinSurfaceGapDrop: the floor or the background seen between two objects; the visible
-  * surface of one convex object lies in front of its chords). Each point set falls into groups
-  * of keypoints joined by such links (single linkage); groups of fewer than three keypoints are
-  * left out. When a set holds two groups or more, each triplet whose three sources lie in one
-  * group and whose three targets lie in one group goes to the part of that pair of groups; the
-  * others (across a gap, or on a keypoint left out) are dropped, and so are parts of fewer
-  * than three triplets, which may leave nothing. Copies that touch without a gap stay joined (splitStraddlingCluster()
-  * and the chain splitting see those).
+  * unless the surface between them falls behind the segment joining them
+  * (surfaceDropsBetween() by kMinSurfaceGapDrop: the floor or the background seen between two
+  * objects; the visible surface of one convex object lies in front of its chords).
+  *
+  * Each point set falls into groups of keypoints joined by such links (single linkage): each
+  * keypoint is linked to its 8 nearest (3D), then the pieces still apart are joined where the
+  * surface does not fall behind their closest pair across. Keypoints without depth at their
+  * pixel, and groups of fewer than three keypoints, are left out; a set with no group left, or
+  * falling into more than 16 pieces, is not judged. When both sets are judged and one holds
+  * two groups or more, each triplet whose three sources lie in one group and whose three
+  * targets lie in one group goes to the part of that pair of groups; the others (across a gap,
+  * or on a keypoint left out or missing from the point sets) are dropped, and so are parts of
+  * fewer than three triplets, which may leave nothing. Copies that touch without a gap stay
+  * joined (splitStraddlingCluster() and the chain splitting see those). An object whose own
+  * surface drops behind a chord (a bowl, a U-shaped part) may be split, or its cluster dropped.
   * \param[in] cluster the cluster (its triplets, reversed flags and point sets)
   * \param[in] triplets the triplet matches the cluster indexes
   * \param[in] surface the organized frame and the keypoints' pixels in it (a valid
   * KeypointSurface, isValidKeypointSurface(); not checked)
   * \return positions in cluster.triplets of each part's members, in the order of their first
-  * triplet; a single part holding every triplet when neither set shows a gap; none when no
-  * part keeps three triplets (nothing of the cluster lies on one pair of copies: its model
-  * would span two)
+  * triplet; a single part holding every triplet (none for a cluster without triplets) when
+  * neither set holds two groups or a set is not judged; no part when no part keeps three
+  * triplets (nothing of the cluster lies on one pair of objects: its model would span two)
   */
 std::vector<std::vector<std::size_t>>
 splitClusterAtSurfaceGaps (const TripletCluster& cluster,
