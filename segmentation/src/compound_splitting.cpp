@@ -301,7 +301,7 @@ surfaceGroups (const pcl::Indices& points, const KeypointSurface& surface)
         surface.keypoint_pixels[static_cast<std::size_t> (k)])];
     if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
       seen.push_back (k);
-      at.push_back (p.getVector3fMap());
+      at.emplace_back (p.getVector3fMap());
     }
   }
   const std::size_t n = seen.size();
