@@ -157,6 +157,20 @@ clusteredLinks (const Copies& scene)
   return links;
 }
 
+/** The frame the camera sees of `plates` above a floor at height floor_y (renderPlates()),
+  * with the pixel of each of the scene's keypoints.
+  */
+mid::KeypointSurface
+seenOnPlates (const Copies& scene,
+              const std::vector<mid::test::Plate>& plates,
+              float floor_y)
+{
+  mid::KeypointSurface seen{mid::test::renderPlates (plates, floor_y), {}};
+  for (const auto& k : *scene.keypoints)
+    seen.keypoint_pixels.push_back (mid::test::plateSurfacePixel (k.getVector3fMap()));
+  return seen;
+}
+
 /** Copy 0 lying at 0.9 m, copy 1 turned about the vertical through its long edge: the two lie
   * side by side, head to tail, and the half turn maps each onto the other.
   */
@@ -249,11 +263,7 @@ struct CopiesApart
   mid::KeypointSurface
   surface (const std::vector<mid::test::Plate>& plates) const
   {
-    mid::KeypointSurface seen{mid::test::renderPlates (plates, 0.12f), {}};
-    for (const auto& k : *scene.keypoints)
-      seen.keypoint_pixels.push_back (
-          mid::test::plateSurfacePixel (k.getVector3fMap()));
-    return seen;
+    return seenOnPlates (scene, plates, 0.12f);
   }
 
   /** The copies' upper faces: 1 cm wider on each side than their keypoints (x in [0.5, 6.5]
@@ -520,11 +530,7 @@ struct RowApart
   mid::KeypointSurface
   surface (const std::vector<mid::test::Plate>& plates) const
   {
-    mid::KeypointSurface seen{mid::test::renderPlates (plates, 0.345f), {}};
-    for (const auto& k : *scene.keypoints)
-      seen.keypoint_pixels.push_back (
-          mid::test::plateSurfacePixel (k.getVector3fMap()));
-    return seen;
+    return seenOnPlates (scene, plates, 0.345f);
   }
 
   /** The upper face under copies first to last, 1.5 cm wider on each side than their
@@ -555,6 +561,17 @@ struct RowApart
     return surface ({face (0, 3)});
   }
 
+  /** The cluster 0, 1 -> 2, 3: one pose, each point set on two copies. */
+  mid::TripletCluster
+  everySecondCopy ()
+  {
+    mid::TripletCluster pairs;
+    scene.link (0, 2, pairs);
+    scene.link (1, 3, pairs);
+    scene.finish (pairs);
+    return pairs;
+  }
+
   /** The copies each part's sources and targets lie on. */
   std::set<std::pair<std::set<int>, std::set<int>>>
   partCopies (const mid::TripletCluster& cluster,
@@ -576,6 +593,10 @@ struct RowApart
     return found;
   }
 
+  /** What the parts of everySecondCopy() link: 0 -> 2 and 1 -> 3. */
+  static inline const std::set<std::pair<std::set<int>, std::set<int>>>
+      kEverySecondCopy{{{0}, {2}}, {{1}, {3}}};
+
   static constexpr float step = 0.12f;
   Copies scene;
 };
@@ -586,10 +607,7 @@ TEST (CompoundSplitting, SplitsEverySecondCopyOfARowApartAtTheSurfaceGaps)
 {
   // Copies 0, 1 -> 2, 3: one pose, each point set on two copies with the floor between them.
   RowApart row;
-  mid::TripletCluster pairs;
-  row.scene.link (0, 2, pairs);
-  row.scene.link (1, 3, pairs);
-  row.scene.finish (pairs);
+  const mid::TripletCluster pairs = row.everySecondCopy();
   ASSERT_EQ (copiesOf (pairs.source_indices), (std::set<int>{0, 1}));
   const mid::KeypointSurface apart = row.copiesApart();
   ASSERT_TRUE (mid::isValidKeypointSurface (apart, row.scene.keypoints->size()));
@@ -597,9 +615,7 @@ TEST (CompoundSplitting, SplitsEverySecondCopyOfARowApartAtTheSurfaceGaps)
   const auto parts = mid::splitClusterAtSurfaceGaps (pairs, *row.scene.triplets, apart);
   ASSERT_EQ (parts.size(), 2u);
   EXPECT_EQ (parts[0].size() + parts[1].size(), pairs.triplets.size());
-  EXPECT_EQ (
-      row.partCopies (pairs, parts),
-      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+  EXPECT_EQ (row.partCopies (pairs, parts), RowApart::kEverySecondCopy);
 
   // The same keypoints on one object: no gap, nothing is cut.
   const auto whole =
@@ -686,18 +702,13 @@ TEST (CompoundSplitting, SplitsAtAGapThatOnlyOnePointSetShows)
   // Copies 2 and 3 on one face (one object to the surface), 0 and 1 apart: the sources tell
   // the two pairs apart.
   RowApart row;
-  mid::TripletCluster pairs;
-  row.scene.link (0, 2, pairs);
-  row.scene.link (1, 3, pairs);
-  row.scene.finish (pairs);
+  const mid::TripletCluster pairs = row.everySecondCopy();
   const auto parts = mid::splitClusterAtSurfaceGaps (
       pairs,
       *row.scene.triplets,
       row.surface (
           {RowApart::face (0, 0), RowApart::face (1, 1), RowApart::face (2, 3)}));
-  EXPECT_EQ (
-      row.partCopies (pairs, parts),
-      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+  EXPECT_EQ (row.partCopies (pairs, parts), RowApart::kEverySecondCopy);
 }
 
 TEST (CompoundSplitting, LeavesAClusterWithTwoKeypointsAcrossAGapWhole)
@@ -727,10 +738,7 @@ TEST (CompoundSplitting, LeavesKeypointsWithoutDepthOutOfTheSurfaceGroups)
   // A keypoint of copy 0 whose pixel has no depth would show no drop towards any other: it
   // takes no group, and its three triangles go; the split is the same.
   RowApart row;
-  mid::TripletCluster pairs;
-  row.scene.link (0, 2, pairs);
-  row.scene.link (1, 3, pairs);
-  row.scene.finish (pairs);
+  const mid::TripletCluster pairs = row.everySecondCopy();
   mid::KeypointSurface surface = row.copiesApart();
   auto holed = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*surface.organized);
   const auto pixel =
@@ -741,9 +749,7 @@ TEST (CompoundSplitting, LeavesKeypointsWithoutDepthOutOfTheSurfaceGroups)
   ASSERT_TRUE (mid::isValidKeypointSurface (surface, row.scene.keypoints->size()));
   const auto parts =
       mid::splitClusterAtSurfaceGaps (pairs, *row.scene.triplets, surface);
-  EXPECT_EQ (
-      row.partCopies (pairs, parts),
-      (std::set<std::pair<std::set<int>, std::set<int>>>{{{0}, {2}}, {{1}, {3}}}));
+  EXPECT_EQ (row.partCopies (pairs, parts), RowApart::kEverySecondCopy);
   std::size_t kept = 0;
   for (const auto& part : parts)
     kept += part.size();
