@@ -173,8 +173,8 @@ public:
     * (splitStraddlingCluster()), or removed when none of its triplets lies on one copy; given
     * the keypoint surface, a cluster whose point sets lie on objects with a gap between them
     * is split there (splitClusterAtSurfaceGaps()); only for triplets within one frame, after
-    * the chains. Default true; false gives the paper's
-    * behaviour, whose models then cover two touching copies.
+    * the chains. Default true; false gives the paper's behaviour, whose models then cover two
+    * touching copies.
     */
   ///@{
   void
