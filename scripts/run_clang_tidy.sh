@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Runs clang-tidy (checks in .clang-tidy) over our sources; fails (exit 1) on any finding.
-#   scripts/run_clang_tidy.sh BUILD_DIR [FILE_OR_FOLDER...]
+#   scripts/run_clang_tidy.sh BUILD_DIR [--changed-since REV] [FILE_OR_FOLDER...]
 # BUILD_DIR must hold compile_commands.json (configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON;
 # ./run.sh does). Without paths it checks the .cpp files in scripts/checked_paths.txt; headers
 # are checked where they are included (HeaderFilterRegex in .clang-tidy). MID_JOBS sets the
 # number of parallel clang-tidy processes (default 2).
+# --changed-since REV keeps only the files whose result can differ from the run at REV: a .cpp
+# file that changed since REV (committed or not), or one whose compiler dependency file in
+# BUILD_DIR (*.o.d, written by the build) names a changed header. A file the build has not
+# compiled yet is checked. Everything is checked when REV is not in this clone's history, or
+# when .clang-tidy, scripts/checked_paths.txt or a CMake file changed (other checks or flags).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,6 +21,12 @@ if [ $# -lt 1 ]; then
 fi
 build_dir=$1
 shift
+since=""
+if [ "${1:-}" = "--changed-since" ]; then
+  [ $# -ge 2 ] || { echo "run_clang_tidy.sh: --changed-since needs a revision" >&2; exit 2; }
+  since=$2
+  shift 2
+fi
 command -v "$CLANG_TIDY" >/dev/null || { echo "run_clang_tidy.sh: $CLANG_TIDY not found" >&2; exit 2; }
 [ -f "$build_dir/compile_commands.json" ] ||
   { echo "run_clang_tidy.sh: no $build_dir/compile_commands.json" >&2; exit 2; }
@@ -33,6 +44,62 @@ for source in "${sources[@]}"; do
   fi
 done
 [ ${#units[@]} -gt 0 ] || { echo "run_clang_tidy.sh: nothing to check" >&2; exit 2; }
+
+# Prints the first prerequisite of each dependency file given: the source it was compiled from.
+depfile_sources_awk='FNR == 1 { after_colon = 0 }
+  { for (i = 1; i <= NF; i++) {
+      if ($i == "\\") continue
+      if (after_colon) { print $i; nextfile }
+      if ($i ~ /:$/) after_colon = 1 } }'
+
+# Prints the units (arguments) whose clang-tidy result can differ from the run at $since.
+changed_units() {
+  if ! git rev-parse -q --verify "$since^{commit}" >/dev/null ||
+     ! git merge-base --is-ancestor "$since" HEAD; then
+    echo "run_clang_tidy.sh: $since is not in this clone's history, so every file is checked" >&2
+    printf '%s\n' "$@"
+    return
+  fi
+  local changed
+  mapfile -t changed < <({ git diff --name-only "$since" --; git ls-files --others --exclude-standard; } | sort -u)
+  local file
+  for file in "${changed[@]}"; do
+    case $file in
+      .clang-tidy | scripts/checked_paths.txt | CMakeLists.txt | */CMakeLists.txt | cmake/*)
+        echo "run_clang_tidy.sh: $file changed since $since, so every file is checked" >&2
+        printf '%s\n' "$@"
+        return
+        ;;
+    esac
+  done
+  [ ${#changed[@]} -gt 0 ] || return 0
+  local changed_paths depfiles
+  changed_paths=$(mktemp)
+  depfiles=$(mktemp)
+  for file in "${changed[@]}"; do echo "$PWD/$file"; done >"$changed_paths"
+  find "$build_dir" -name '*.o.d' -print >"$depfiles"
+  local compiled hit
+  compiled=$(xargs -r awk "$depfile_sources_awk" <"$depfiles" | sort -u)
+  hit=$(xargs -r grep -lF -f "$changed_paths" <"$depfiles" |
+          xargs -r awk "$depfile_sources_awk" | sort -u || true)
+  rm -f "$changed_paths" "$depfiles"
+  local unit
+  for unit in "$@"; do
+    if ! grep -qxF "$PWD/$unit" <<<"$compiled" || grep -qxF "$PWD/$unit" <<<"$hit"; then
+      echo "$unit"
+    fi
+  done
+}
+
+if [ -n "$since" ]; then
+  total=${#units[@]}
+  mapfile -t units < <(changed_units "${units[@]}")
+  if [ ${#units[@]} -eq 0 ]; then
+    echo "run_clang_tidy.sh: none of the $total files can give another result than at $since"
+    exit 0
+  fi
+  echo "run_clang_tidy.sh: ${#units[@]} of $total files can give another result than at $since"
+fi
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
