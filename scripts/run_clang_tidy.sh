@@ -8,8 +8,10 @@
 # --changed-since REV keeps only the files whose result can differ from the run at REV: a .cpp
 # file that changed since REV (committed or not), or one whose compiler dependency file in
 # BUILD_DIR (*.o.d, written by the build) names a changed header. A file the build has not
-# compiled yet is checked. Everything is checked when REV is not in this clone's history, or
-# when .clang-tidy, scripts/checked_paths.txt or a CMake file changed (other checks or flags).
+# compiled yet is checked. When a CMake file changed, REV is configured with BUILD_DIR's options
+# and a .cpp file whose compile command differs is checked too. Everything is checked when REV
+# is not in this clone's history (or does not configure), or when .clang-tidy or
+# scripts/checked_paths.txt changed (other checks or files).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -52,6 +54,42 @@ depfile_sources_awk='FNR == 1 { after_colon = 0 }
       if (after_colon) { print $i; nextfile }
       if ($i ~ /:$/) after_colon = 1 } }'
 
+# Prints "file<TAB>command" for each entry of a compile_commands.json, with the source and
+# build folders of its configuration ($2, $3) written as those of this run's ($PWD, $build_dir).
+compile_commands_of() {
+  awk -v src="$2" -v bld="$3" -v src_now="$PWD" -v bld_now="$(cd "$build_dir" && pwd)" '
+    function now(text) { gsub(bld, bld_now, text); gsub(src, src_now, text); return text }
+    /^ *"command": / { command = now($0); sub(/^ *"command": /, "", command) }
+    /^ *"file": / { file = now($0); sub(/^ *"file": "/, "", file); sub(/",?$/, "", file)
+                    print file "\t" command }' "$1" | sort
+}
+
+# Prints the sources whose compile command differs from the one they had at $since (or that
+# had none): $since's tree is configured with this build's options and the commands compared.
+# Fails when that configuration fails.
+commands_changed_since() {
+  local tree config status=0
+  tree=$(mktemp -d)
+  config=$(mktemp -d)
+  local options=()
+  mapfile -t options < <(grep -E '^(CMAKE_BUILD_TYPE|CMAKE_(C|CXX)_(COMPILER|FLAGS[A-Z_]*)|MID_[A-Z_]+):' \
+                           "$build_dir/CMakeCache.txt" | sed 's/^/-D/')
+  if git archive "$since" | tar -x -C "$tree" &&
+     cmake -S "$tree" -B "$config" "${options[@]}" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+       >/dev/null 2>&1; then
+    # Regular-expression characters in the folder names stand for themselves closely enough:
+    # mktemp's names and a checkout path hold none but '.', which then matches itself too.
+    compile_commands_of "$build_dir/compile_commands.json" "$PWD" "$(cd "$build_dir" && pwd)" \
+      >"$tree.now"
+    compile_commands_of "$config/compile_commands.json" "$tree" "$config" >"$tree.then"
+    comm -23 "$tree.now" "$tree.then" | cut -f1 | sort -u
+  else
+    status=1
+  fi
+  rm -rf "$tree" "$config" "$tree.now" "$tree.then"
+  return $status
+}
+
 # Prints the units (arguments) whose clang-tidy result can differ from the run at $since.
 changed_units() {
   if ! git rev-parse -q --verify "$since^{commit}" >/dev/null ||
@@ -62,16 +100,26 @@ changed_units() {
   fi
   local changed
   mapfile -t changed < <({ git diff --name-only "$since" --; git ls-files --others --exclude-standard; } | sort -u)
-  local file
+  local file cmake_changed=""
   for file in "${changed[@]}"; do
     case $file in
-      .clang-tidy | scripts/checked_paths.txt | CMakeLists.txt | */CMakeLists.txt | cmake/*)
+      .clang-tidy | scripts/checked_paths.txt)
         echo "run_clang_tidy.sh: $file changed since $since, so every file is checked" >&2
         printf '%s\n' "$@"
         return
         ;;
+      CMakeLists.txt | */CMakeLists.txt | cmake/*) cmake_changed=$file ;;
     esac
   done
+  local recompiled=""
+  if [ -n "$cmake_changed" ]; then
+    if ! recompiled=$(commands_changed_since); then
+      echo "run_clang_tidy.sh: $cmake_changed changed since $since and $since does not" \
+           "configure here, so every file is checked" >&2
+      printf '%s\n' "$@"
+      return
+    fi
+  fi
   [ ${#changed[@]} -gt 0 ] || return 0
   local changed_paths depfiles
   changed_paths=$(mktemp)
@@ -85,7 +133,8 @@ changed_units() {
   rm -f "$changed_paths" "$depfiles"
   local unit
   for unit in "$@"; do
-    if ! grep -qxF "$PWD/$unit" <<<"$compiled" || grep -qxF "$PWD/$unit" <<<"$hit"; then
+    if ! grep -qxF "$PWD/$unit" <<<"$compiled" || grep -qxF "$PWD/$unit" <<<"$hit" ||
+       grep -qxF "$PWD/$unit" <<<"$recompiled"; then
       echo "$unit"
     fi
   done
