@@ -197,6 +197,9 @@ printHelp (const char* program)
   line ("-disagree_copies N",
         "size disagreement: fewest copies of a model it judges",
         d.size_disagreement_min_copies);
+  line ("-box_turn_gain G",
+        "box turns: correlation a turn must gain over the present one",
+        static_cast<double> (d.box_turn_min_gain));
   line ("-obs_residual D",
         "observations: largest distance of a kept one from its landmark, metres",
         static_cast<double> (d.observation_max_residual));
@@ -307,6 +310,11 @@ printHelp (const char* program)
               "agree\n");
   print_info ("                      on no size (the paper's behaviour)\n");
   print_info (
+      "  -keep_box_turns     keep the turn of the copies posed by their box alone "
+      "when\n");
+  print_info (
+      "                      their print says another (the paper's behaviour)\n");
+  print_info (
       "  -keep_unexplained   keep the observations an instance's pose does not explain "
       "(the\n");
   print_info ("                      paper's behaviour)\n");
@@ -382,6 +390,8 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-keep_unexplained", 0},
                                       {"-keep_interpenetrating", 0},
                                       {"-keep_disagreeing_sizes", 0},
+                                      {"-keep_box_turns", 0},
+                                      {"-box_turn_gain", 1},
                                       {"-obs_residual", 1},
                                       {"-obs_margin", 1},
                                       {"-no_size_search", 0},
@@ -490,6 +500,7 @@ parseOptions (int argc, char** argv, Options& options)
       !pcl::console::find_switch (argc, argv, "-keep_interpenetrating");
   p.remove_disagreeing_sizes =
       !pcl::console::find_switch (argc, argv, "-keep_disagreeing_sizes");
+  p.resolve_box_turns = !pcl::console::find_switch (argc, argv, "-keep_box_turns");
   p.size_search = !pcl::console::find_switch (argc, argv, "-no_size_search");
   p.size_discovery = !pcl::console::find_switch (argc, argv, "-no_size_discovery");
   const bool numbers_valid =
@@ -550,6 +561,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (
           argc, argv, "-disagree_surrounded", p.size_disagreement_max_surrounded) &&
       parseNumber (argc, argv, "-disagree_copies", p.size_disagreement_min_copies) &&
+      parseNumber (argc, argv, "-box_turn_gain", p.box_turn_min_gain) &&
       parseNumber (argc, argv, "-obs_residual", p.observation_max_residual) &&
       parseNumber (argc, argv, "-obs_margin", p.observation_box_margin) &&
       parseNumber (argc, argv, "-size_kp", p.size_search_min_keypoints) &&

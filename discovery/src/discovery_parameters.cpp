@@ -301,6 +301,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "size_disagreement_min_copies",
              static_cast<double> (p.size_disagreement_min_copies),
              ">= 2");
+  c.require (p.box_turn_min_gain >= 0.0f && p.box_turn_min_gain <= 2.0f,
+             "box_turn_min_gain",
+             static_cast<double> (p.box_turn_min_gain),
+             "in [0, 2]");
   c.require (p.observation_max_residual > 0.0f &&
                  std::isfinite (p.observation_max_residual),
              "observation_max_residual",

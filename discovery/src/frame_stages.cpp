@@ -4,6 +4,7 @@
 #include "stage_tools.h"
 
 #include <mid/registration/observation_pruning.h>
+#include <mid/segmentation/box_turn_resolver.h>
 #include <mid/segmentation/frame_pinhole.h>
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/interpenetration_filter.h>
@@ -75,6 +76,32 @@ setUpBoxMeasurement (const DiscoveryParameters& p,
   measurement.setSizeTolerance (p.size_tolerance, p.relative_size_tolerance);
 }
 
+/** The refinement of the instances' poses on the frame's depth with the pipeline's settings. */
+SurfacePoseRefinement
+makeSurfaceRefinement (const DiscoveryParameters& p,
+                       const KeypointSurface& frame,
+                       const DiscoveryResult& result)
+{
+  SurfacePoseRefinement refinement;
+  refinement.setInputKeypoints (result.keypoints);
+  refinement.setKeypointSurface (frame);
+  refinement.setSampleStep (p.surface_sample_step);
+  refinement.setMaxCorrespondenceDistance (p.surface_max_distance);
+  refinement.setSurfaceWeight (p.surface_weight);
+  refinement.setMaxIterations (p.surface_iterations);
+  return refinement;
+}
+
+/** True if an instance of `model` has another pose than in `before` (its instances then). */
+bool
+modelTurned (const ObjectModel& model, const ModelInstances& before)
+{
+  for (std::size_t i = 0; i < model.instances.size(); ++i)
+    if (model.instances[i].pose != before[i].pose)
+      return true;
+  return false;
+}
+
 } // namespace
 
 KeypointSurface
@@ -88,7 +115,7 @@ frameSurface (const DiscoveryParameters& p,
   pcl::copyPointCloud (*organized, *points);
   frame.organized = points;
   if (!p.verify_clusters && !p.verify_joins && !p.guided_search && !p.patch_discovery &&
-      !p.split_by_appearance && !p.surface_refinement)
+      !p.split_by_appearance && !p.surface_refinement && !p.resolve_box_turns)
     return frame;
   frame.intensity =
       std::make_shared<const std::vector<float>> (greyLevels (*organized));
@@ -113,13 +140,7 @@ refineOnSurface (const DiscoveryParameters& p,
 {
   pcl::StopWatch watch;
   if (p.surface_refinement && frame.organized && frame.pinhole) {
-    SurfacePoseRefinement refinement;
-    refinement.setInputKeypoints (result.keypoints);
-    refinement.setKeypointSurface (frame);
-    refinement.setSampleStep (p.surface_sample_step);
-    refinement.setMaxCorrespondenceDistance (p.surface_max_distance);
-    refinement.setSurfaceWeight (p.surface_weight);
-    refinement.setMaxIterations (p.surface_iterations);
+    const SurfacePoseRefinement refinement = makeSurfaceRefinement (p, frame, result);
     for (auto& model : result.models)
       if (!refinement.refine (model))
         return false;
@@ -311,6 +332,39 @@ removeDisagreeingSizes (const DiscoveryParameters& p,
       return false;
   }
   result.timing_ms.emplace_back ("size_disagreement", watch.getTime());
+  return true;
+}
+
+bool
+resolveBoxTurns (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 FramePlane& plane,
+                 DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.resolve_box_turns && canCompareLooks (frame) && !result.models.empty()) {
+    BoxTurnResolver resolver;
+    setUpBoxMeasurement (p, frame, result, plane, resolver);
+    resolver.setVerification (makeVerification (
+        p, withKeypointPixels (frame, result), p.min_join_correlation));
+    resolver.setMinGain (p.box_turn_min_gain);
+    std::vector<ModelInstances> before;
+    for (const auto& model : result.models)
+      before.push_back (model.instances);
+    std::size_t turned = 0;
+    if (!resolver.resolve (result.models, turned))
+      return false;
+    // A turned copy rests on its box about the measured centre: its surface, now facing the
+    // same way as the other copies', aligns it with theirs.
+    if (turned > 0 && p.surface_refinement) {
+      const SurfacePoseRefinement refinement = makeSurfaceRefinement (p, frame, result);
+      for (std::size_t m = 0; m < result.models.size(); ++m)
+        if (modelTurned (result.models[m], before[m]) &&
+            !refinement.refine (result.models[m]))
+          return false;
+    }
+  }
+  result.timing_ms.emplace_back ("box_turns", watch.getTime());
   return true;
 }
 

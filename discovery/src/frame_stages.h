@@ -125,6 +125,16 @@ removeDisagreeingSizes (const DiscoveryParameters& p,
                         FramePlane& plane,
                         DiscoveryResult& result);
 
+/** Turn the groups of a model's copies posed by their box alone to the turn their print
+  * confirms (DiscoveryParameters::resolve_box_turns), when the organized frame, its grey levels
+  * and projection are known; times the "box_turns" stage either way.
+  */
+bool
+resolveBoxTurns (const DiscoveryParameters& p,
+                 const KeypointSurface& frame,
+                 FramePlane& plane,
+                 DiscoveryResult& result);
+
 /** Drop the observations that the instances' poses do not explain
   * (DiscoveryParameters::prune_observations); times the "observations" stage either way.
   */

@@ -298,7 +298,8 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-leftover_margin -0.01",
                              "-min_ratio -0.5",
                              "-disagree_surrounded 1.5",
-                             "-disagree_copies 1"}) {
+                             "-disagree_copies 1",
+                             "-box_turn_gain 2.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");
   }

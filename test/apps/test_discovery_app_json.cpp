@@ -70,12 +70,13 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
   EXPECT_NE (json.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << json;
   // Two copies of one print: the verification confirms the cluster between them.
   EXPECT_NE (json.find ("\"rejected_clusters\": 0,"), std::string::npos) << json;
-  for (const char* stage :
-       {"features",         "matching",          "triplets",        "clustering",
-        "verification",     "modeling",          "detection",       "leftovers",
-        "patches",          "box_search",        "surface",         "size_split",
-        "size_merge",       "box_pruning",       "repeated_prints", "size_search",
-        "interpenetration", "size_disagreement", "observations",    "total"})
+  for (const char* stage : {"features",    "matching",         "triplets",
+                            "clustering",  "verification",     "modeling",
+                            "detection",   "leftovers",        "patches",
+                            "box_search",  "surface",          "size_split",
+                            "size_merge",  "box_pruning",      "repeated_prints",
+                            "size_search", "interpenetration", "size_disagreement",
+                            "box_turns",   "observations",     "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;
   // One instance on each copy: its keypoints' box within the copy (plus SIFT's outline margin).

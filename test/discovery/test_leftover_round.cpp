@@ -156,6 +156,7 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
                                          "size_search",
                                          "interpenetration",
                                          "size_disagreement",
+                                         "box_turns",
                                          "observations"};
   ASSERT_GE (result.timing_ms.size(), last.size());
   for (std::size_t i = 0; i < last.size(); ++i)

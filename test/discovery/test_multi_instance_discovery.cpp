@@ -584,6 +584,11 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   disagreement = mid::DiscoveryParameters();
   disagreement.size_disagreement_min_copies = 1;
   refuses (disagreement, "size_disagreement_min_copies");
+  mid::DiscoveryParameters turns;
+  turns.box_turn_min_gain = -0.1f;
+  refuses (turns, "box_turn_min_gain");
+  turns.box_turn_min_gain = std::numeric_limits<float>::quiet_NaN();
+  refuses (turns, "box_turn_min_gain");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

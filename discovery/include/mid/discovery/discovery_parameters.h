@@ -425,6 +425,16 @@ struct DiscoveryParameters
   float size_disagreement_max_surrounded = 0.05f;
   int size_disagreement_min_copies = 3;
   ///@}
+  /** \brief Then turn the groups of a model's copies that share no landmark with its other
+    * copies (posed by their box alone, up to its symmetries) to the turn of the box whose
+    * look the photometric verification confirms, when its correlation beats that of the
+    * present turn by box_turn_min_gain (in [0, 2]) (not in the paper; BoxTurnResolver).
+    * Needs the organized frame, its grey levels and projection, and a model size.
+    */
+  ///@{
+  bool resolve_box_turns = true;
+  float box_turn_min_gain = 0.1f;
+  ///@}
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the
     * paper; pruneUnexplainedObservations()): a keypoint farther than
     * observation_max_residual (metres, > 0; the paper's inlier threshold) from where the pose
