@@ -178,6 +178,11 @@ printHelp (const char* program)
   line ("-size_rel_tol R",
         "size merge: ... or R times the edge, if larger",
         static_cast<double> (d.relative_size_tolerance));
+  line (
+      "-size_consensus R",
+      "size merge: a copy's pixels within R of another copy's make its consensus box, "
+      "metres (0: none)",
+      static_cast<double> (d.size_merge_consensus_radius));
   line ("-repeat_rot A",
         "repeated prints: largest turn between two instances on one object, degrees",
         static_cast<double> (d.repeated_print_max_rotation) * 180.0 / M_PI);
@@ -379,6 +384,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-no_size_merge", 0},
                                       {"-size_tol", 1},
                                       {"-size_rel_tol", 1},
+                                      {"-size_consensus", 1},
                                       {"-keep_outside_box", 0},
                                       {"-keep_repeated_prints", 0},
                                       {"-repeat_rot", 1},
@@ -554,6 +560,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-surface_iterations", p.surface_iterations) &&
       parseNumber (argc, argv, "-size_tol", p.size_tolerance) &&
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
+      parseNumber (argc, argv, "-size_consensus", p.size_merge_consensus_radius) &&
       parseDegrees (argc, argv, "-repeat_rot", p.repeated_print_max_rotation) &&
       parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
       parseNumber (argc, argv, "-repeat_along", p.repeated_print_max_shift_along) &&

@@ -250,6 +250,11 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "relative_size_tolerance",
              static_cast<double> (p.relative_size_tolerance),
              "finite and >= 0");
+  c.require (p.size_merge_consensus_radius >= 0.0f &&
+                 std::isfinite (p.size_merge_consensus_radius),
+             "size_merge_consensus_radius",
+             static_cast<double> (p.size_merge_consensus_radius),
+             "finite and >= 0");
   c.require (p.repeated_print_max_rotation >= 0.0f &&
                  p.repeated_print_max_rotation <= static_cast<float> (M_PI),
              "repeated_print_max_rotation",

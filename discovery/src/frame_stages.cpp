@@ -224,6 +224,7 @@ mergeBySize (const DiscoveryParameters& p,
     ModelSizeMerger merger;
     setUpBoxMeasurement (p, frame, result, plane, merger);
     merger.setDuplicateThresholds (p.duplicate_angle, p.duplicate_distance);
+    merger.setConsensusRadius (p.size_merge_consensus_radius);
     if (!merger.merge (result.models))
       return false;
   }

@@ -555,6 +555,9 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
     EXPECT_FALSE (mid::validateDiscoveryParameters (bad, problem)) << name;
     EXPECT_NE (problem.find (name), std::string::npos) << problem;
   };
+  mid::DiscoveryParameters consensus;
+  consensus.size_merge_consensus_radius = -0.005f;
+  refuses (consensus, "size_merge_consensus_radius");
   mid::DiscoveryParameters turn;
   turn.repeated_print_max_rotation = 4.0f;
   refuses (turn, "repeated_print_max_rotation");

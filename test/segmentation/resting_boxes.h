@@ -150,5 +150,22 @@ twoApartTwoTouching (const Eigen::Vector3d& size_of_0_and_1 = kPrintedBoxSize)
           restingBox (kSoyPrint, 0.0, 0.19, 180.0)};
 }
 
+/** Boxes 0 and 1 (one print), each lying flush with a box of its height and another print, 0's
+  * along its long edge (box 4), 1's along its short edge (box 5), so that the top of each joins
+  * its neighbour's in one flat surface in a different place; boxes 2 and 3 (a third print, of
+  * `size_of_2_and_3`) apart.
+  */
+inline std::vector<BoxSpec>
+twoJoinedTwoApart (const Eigen::Vector3d& size_of_2_and_3 = kPrintedBoxSize)
+{
+  constexpr const char* kNeighbourPrint = "god_morgon_orange_juice_front.jpg";
+  return {restingBox (kApplePrint, -0.2, -0.15, 0.0),
+          restingBox (kApplePrint, 0.2, -0.15, 0.0),
+          restingBox (kSoyPrint, -0.15, 0.2, 70.0, size_of_2_and_3),
+          restingBox (kSoyPrint, 0.17, 0.2, 160.0, size_of_2_and_3),
+          restingBox (kNeighbourPrint, -0.2, -0.15 + kPrintedBoxSize.y(), 0.0),
+          restingBox (kNeighbourPrint, 0.2 + kPrintedBoxSize.x(), -0.15, 0.0)};
+}
+
 } // namespace test
 } // namespace mid

@@ -359,6 +359,27 @@ TEST (ModelSizeMerger, MergesModelsThroughOneCopyOfEachMeasuredWhole)
   EXPECT_EQ (models.size(), 2u);
 }
 
+TEST (ModelSizeMerger, MergesAModelWhoseCopiesEachLieFlushWithANeighbour)
+{
+  // Boxes 0 and 1 each lie flush with a neighbour of their height (boxes 4 and 5, in no
+  // model), in a different place: measured on its own, neither copy has the size of boxes 2
+  // and 3, and no way but the consensus boxes joins the two models.
+  const Boxes scene (mid::test::twoJoinedTwoApart());
+  ASSERT_NO_FATAL_FAILURE (expectMergedWithPosed (scene, {0, 1, 2, 3}));
+
+  mid::ModelSizeMerger without = mergerFor (scene);
+  without.setConsensusRadius (0.0f);
+  mid::ObjectModels models = twoModels (scene);
+  ASSERT_TRUE (without.merge (models));
+  EXPECT_EQ (models.size(), 2u);
+
+  // Boxes 2 and 3 of another size: the consensus boxes do not join them either.
+  const Boxes other_size (mid::test::twoJoinedTwoApart ({0.1, 0.07, 0.04}));
+  models = twoModels (other_size);
+  ASSERT_TRUE (mergerFor (other_size).merge (models));
+  EXPECT_EQ (models.size(), 2u);
+}
+
 TEST (InstanceExtent, RefusesPixelsOutsideTheFrameOrWithoutAPoint)
 {
   const Boxes scene (fourBoxes());
@@ -423,6 +444,10 @@ TEST (ModelSizeMerger, RefusesBadInputAndLeavesTheModels)
   mid::ModelSizeMerger no_step = mergerFor (scene);
   no_step.setMaxStep (0.0f);
   refuses (no_step, original);
+
+  mid::ModelSizeMerger no_radius = mergerFor (scene);
+  no_radius.setConsensusRadius (-0.005f);
+  refuses (no_radius, original);
 
   mid::ModelSizeMerger nobody = mergerFor (scene);
   nobody.setMinAgreeing (0);

@@ -349,6 +349,13 @@ struct DiscoveryParameters
   float size_tolerance = 0.006f;
   float relative_size_tolerance = 0.03f;
   ///@}
+  /** \brief The size merge also joins two models when one's size is that of a consensus box
+    * of the other's copies (ModelSizeMerger::setConsensusRadius()): the box of the pixels of a
+    * copy's surface that lie within this distance (metres, >= 0; 0: no consensus boxes) of
+    * another copy's surface in the model frame, without the neighbour the copy lies flush
+    * with. Seed 3: instance F1 0.931 -> 0.934 (session 48, doc/benchmark.md).
+    */
+  float size_merge_consensus_radius = 0.02f;
   /** \brief After the size merge, drop the observations outside the box a model's copies
     * occupy on the support plane (not in the paper; ModelBoxPruning): when at least two of
     * its measured copies agree on its size, a keypoint farther than observation_box_margin

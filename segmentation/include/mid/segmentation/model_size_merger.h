@@ -35,6 +35,13 @@ namespace mid {
   *    agree on a size (`min_agreeing`). A merged model merges on by its size alone, so a
   *    third model of the product may stay apart where only such a pair of copies links it.
   *
+  * 5. when none of the above joins two models, merges them when one model's size is that of a
+  *    consensus box of the other's copies (consensusBoxes()): the box of what a copy shares
+  *    with the model's other copies, without the neighbour of its height it lies flush with
+  *    (setConsensusRadius()). Where each of a model's copies lies flush with a different
+  *    neighbour, each copy's own box holds it and the neighbour, and only its consensus box
+  *    has the product's size.
+  *
   * Two products of one size (within the tolerance) are merged too: the step trades those for
   * the second models of one product, which are far more common on a table of several copies
   * of one product. The split of a join between touching copies follows their keypoints, not
@@ -66,6 +73,24 @@ public:
   }
   ///@}
 
+  /** \brief How near another copy's surface (in the model frame) a copy's surface pixel
+    * must lie to count in the copy's consensus box (metres, default 0.02, >= 0; 0 merges
+    * without consensus boxes). It bounds how far the box reaches past the copy where a
+    * neighbour of its height lies flush with it, and must exceed the poses' disagreement.
+    */
+  ///@{
+  void
+  setConsensusRadius (float radius)
+  {
+    consensus_radius_ = radius;
+  }
+  float
+  getConsensusRadius () const
+  {
+    return consensus_radius_;
+  }
+  ///@}
+
   /** \brief Merge the models of one size.
     * \param[in,out] models the frame's models; merged ones are removed, the others keep their
     * order. Without a support plane nothing changes.
@@ -78,6 +103,7 @@ public:
 private:
   float duplicate_angle_ = static_cast<float> (10.0 * M_PI / 180.0);
   float duplicate_distance_ = 0.01f;
+  float consensus_radius_ = 0.02f;
 };
 
 } // namespace mid

@@ -1,0 +1,132 @@
+// consensusBoxes() on rendered boxes resting on a table, each of a model's copies lying flush
+// with a neighbour of its height in a different place.
+#include "resting_boxes.h"
+
+#include <mid/segmentation/consensus_boxes.h>
+#include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/model_size.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace {
+
+using mid::test::kPrintedBoxSize;
+using Boxes = mid::test::RestingBoxes;
+
+/** The scene's support plane and the boxes of the instances of `model`, each measured on its
+  * own surface (measureInstanceBoxes()).
+  */
+void
+measure (const Boxes& scene,
+         const mid::ObjectModel& model,
+         Eigen::Vector4f& plane,
+         mid::InstanceExtents& extents)
+{
+  const auto& organized = *scene.surface.organized;
+  ASSERT_TRUE (mid::fitSupportPlane (organized, 0.01f, 0.2f, plane));
+  std::vector<mid::InstanceExtents> per_model;
+  ASSERT_TRUE (mid::measureInstanceBoxes (organized,
+                                          plane,
+                                          scene.surface.keypoint_pixels,
+                                          {model},
+                                          0.008f,
+                                          0.3f,
+                                          0.01f,
+                                          per_model));
+  ASSERT_EQ (per_model.size(), 1u);
+  extents = per_model[0];
+}
+
+/** The box's edges (ascending) agree with the printed box's within 6 mm. */
+bool
+hasPrintedSize (const mid::InstanceExtent& box)
+{
+  Eigen::Vector3f truth = kPrintedBoxSize.cast<float>();
+  std::sort (truth.data(), truth.data() + 3);
+  return (box.size - truth).cwiseAbs().maxCoeff() < 0.006f;
+}
+
+TEST (ConsensusBoxes, MeasuresEachCopyWithoutTheNeighbourItLiesFlushWith)
+{
+  const Boxes scene (mid::test::twoJoinedTwoApart());
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  Eigen::Vector4f plane;
+  mid::InstanceExtents extents;
+  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
+  ASSERT_EQ (extents.size(), 2u);
+  // Measured on its own, each copy's box holds its neighbour: 0.18 or 0.24 long.
+  for (const auto& box : extents)
+    EXPECT_FALSE (hasPrintedSize (box)) << box.size.transpose();
+
+  // The band of the neighbour within the radius of the other copy's edge goes too: the box
+  // does not grow with the radius.
+  for (const float radius : {0.005f, 0.01f, 0.02f}) {
+    mid::InstanceExtents consensus;
+    ASSERT_TRUE (mid::consensusBoxes (
+        *scene.surface.organized, plane, model, extents, radius, consensus));
+    ASSERT_EQ (consensus.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+      EXPECT_TRUE (hasPrintedSize (consensus[i]))
+          << "radius " << radius << ": " << consensus[i].size.transpose();
+      // The box is the copy's own: its centre is the box's, its pixels a part of the copy's.
+      const auto& truth = scene.scene.boxes[i].pose;
+      EXPECT_LT (
+          (consensus[i].pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
+              .norm(),
+          0.006f)
+          << "radius " << radius << ", box " << i;
+      EXPECT_LT (consensus[i].surface.size(), extents[i].surface.size());
+    }
+  }
+}
+
+TEST (ConsensusBoxes, GivesNoBoxWithoutASecondMeasuredCopy)
+{
+  const Boxes scene (mid::test::twoJoinedTwoApart());
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  Eigen::Vector4f plane;
+  mid::InstanceExtents extents;
+  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
+  extents[1] = mid::InstanceExtent();
+  mid::InstanceExtents consensus;
+  ASSERT_TRUE (mid::consensusBoxes (
+      *scene.surface.organized, plane, model, extents, 0.005f, consensus));
+  ASSERT_EQ (consensus.size(), 2u);
+  for (const auto& box : consensus) {
+    EXPECT_TRUE (box.surface.empty());
+    EXPECT_EQ (box.size, Eigen::Vector3f::Zero());
+  }
+}
+
+TEST (ConsensusBoxes, RefusesBadInputWithNoBoxes)
+{
+  const Boxes scene (mid::test::twoJoinedTwoApart());
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  Eigen::Vector4f plane;
+  mid::InstanceExtents extents;
+  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
+  const auto& organized = *scene.surface.organized;
+  mid::InstanceExtents consensus (1);
+  for (const float radius : {0.0f, -0.01f, std::numeric_limits<float>::quiet_NaN()}) {
+    EXPECT_FALSE (
+        mid::consensusBoxes (organized, plane, model, extents, radius, consensus));
+    EXPECT_TRUE (consensus.empty());
+  }
+  consensus.resize (1);
+  const mid::InstanceExtents one (1, extents[0]);
+  EXPECT_FALSE (mid::consensusBoxes (organized, plane, model, one, 0.005f, consensus));
+  EXPECT_TRUE (consensus.empty());
+
+  mid::InstanceExtents outside = extents;
+  outside[1].surface.push_back (static_cast<int> (organized.size()));
+  consensus.resize (1);
+  EXPECT_FALSE (
+      mid::consensusBoxes (organized, plane, model, outside, 0.005f, consensus));
+  EXPECT_TRUE (consensus.empty());
+}
+
+} // namespace
