@@ -2,10 +2,10 @@
 #include <mid/segmentation/instance_extent.h>
 
 #include <Eigen/Geometry>
-#include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -14,18 +14,20 @@ namespace mid {
 
 namespace {
 
-using Points = std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>>;
+using Points = std::vector<Eigen::Vector3f>;
 
-/** Every how many rows and columns a surface's pixels are used: a quarter of them moves a box
-  * by under a pixel and costs a sixteenth of the comparisons.
+/** Every how many rows and columns a surface's pixels are compared: a quarter of them costs a
+  * sixteenth of the comparisons, and the box fitted to them still reaches within a pixel of
+  * the edges.
   */
-constexpr std::uint32_t kPixelStride = 2;
+constexpr std::uint32_t kConsensusStride = 2;
 
 bool
 onStride (pcl::index_t pixel, std::uint32_t width)
 {
   const auto index = static_cast<std::uint32_t> (pixel);
-  return (index / width) % kPixelStride == 0 && (index % width) % kPixelStride == 0;
+  return (index / width) % kConsensusStride == 0 &&
+         (index % width) % kConsensusStride == 0;
 }
 
 /** The copies' surface points in the model frame, hashed into cubes of one edge, each cube's
@@ -52,11 +54,31 @@ public:
       found->points.push_back (p);
   }
 
-  /** \brief True if a point of copy `copy` (if `same`) or of another copy (if not) lies
-    * within the cell edge of p.
-    */
+  /** \brief True if a point of a copy other than `copy` lies within the cell edge of p. */
   bool
-  near (const Eigen::Vector3f& p, std::size_t copy, bool same) const
+  nearOtherCopy (const Eigen::Vector3f& p, std::size_t copy) const
+  {
+    return nearAny (p, [copy] (std::size_t c) { return c != copy; });
+  }
+
+  /** \brief True if a point of copy `copy` lies within the cell edge of p. */
+  bool
+  nearCopy (const Eigen::Vector3f& p, std::size_t copy) const
+  {
+    return nearAny (p, [copy] (std::size_t c) { return c == copy; });
+  }
+
+private:
+  struct CopyPoints
+  {
+    std::size_t copy;
+    Points points;
+  };
+
+  /** True if a point of a copy that `counts` lies within the cell edge of p. */
+  template <typename Counts>
+  bool
+  nearAny (const Eigen::Vector3f& p, const Counts& counts) const
   {
     const Eigen::Vector3i c = cellOf (p);
     const float squared = cell_ * cell_;
@@ -67,7 +89,7 @@ public:
           if (found == cells_.end())
             continue;
           for (const auto& group : found->second)
-            if ((group.copy == copy) == same)
+            if (counts (group.copy))
               for (const auto& q : group.points)
                 if ((q - p).squaredNorm() <= squared)
                   return true;
@@ -75,17 +97,15 @@ public:
     return false;
   }
 
-private:
-  struct CopyPoints
-  {
-    std::size_t copy;
-    Points points;
-  };
-
+  /** The cube of p; coordinates clamped to +-2^30 cubes, so that the cast is defined for every
+    * finite point (cubes that far apart only share keys, and the distance test tells them
+    * apart).
+    */
   Eigen::Vector3i
   cellOf (const Eigen::Vector3f& p) const
   {
-    return (p / cell_).array().floor().cast<int>();
+    constexpr float kFarthest = 1073741824.0f;
+    return (p / cell_).array().floor().max (-kFarthest).min (kFarthest).cast<int>();
   }
 
   /** 21 bits per coordinate: cells of a millimetre reach a kilometre. */
@@ -119,55 +139,51 @@ consensusBoxes (const pcl::PointCloud<pcl::PointXYZ>& organized,
                model.instances.size());
     return false;
   }
-  if (!(radius > 0.0f)) {
-    PCL_ERROR ("[mid::consensusBoxes] The radius must be > 0, not %g.\n",
+  if (!(radius > 0.0f) || !std::isfinite (radius)) {
+    PCL_ERROR ("[mid::consensusBoxes] The radius must be finite and > 0, not %g.\n",
                static_cast<double> (radius));
     return false;
   }
-  // Every copy's surface (every kPixelStride-th row and column) in the model frame:
+  for (const auto& extent : extents)
+    if (const char* problem = surfacePixelsProblem (organized, extent.surface)) {
+      PCL_ERROR ("[mid::consensusBoxes] %s.\n", problem);
+      return false;
+    }
+  consensus.assign (extents.size(), InstanceExtent());
+  if (measuredInstances (extents).size() < 2)
+    return true;
+
+  // Every copy's surface (every kConsensusStride-th row and column) in the model frame:
   // x_model = pose^-1 * x_camera.
   std::vector<pcl::Indices> pixels (extents.size());
   std::vector<Points> in_model (extents.size());
   CopyGrid grid (radius);
   for (std::size_t i = 0; i < extents.size(); ++i) {
-    if (extents[i].surface.empty())
-      continue;
     const Eigen::Affine3f to_model (model.instances[i].pose.inverse());
-    for (const auto pixel : extents[i].surface) {
-      if (pixel < 0 || static_cast<std::size_t> (pixel) >= organized.size() ||
-          !pcl::isFinite (organized[pixel])) {
-        PCL_ERROR ("[mid::consensusBoxes] Surface pixel %d has no point.\n",
-                   static_cast<int> (pixel));
-        return false; // consensus is still empty
+    for (const auto pixel : extents[i].surface)
+      if (onStride (pixel, organized.width)) {
+        pixels[i].push_back (pixel);
+        in_model[i].push_back (to_model * organized[pixel].getVector3fMap());
+        grid.add (in_model[i].back(), i);
       }
-      if (!onStride (pixel, organized.width))
-        continue;
-      const Eigen::Vector3f p = to_model * organized[pixel].getVector3fMap();
-      pixels[i].push_back (pixel);
-      in_model[i].push_back (p);
-      grid.add (p, i);
-    }
   }
-  consensus.assign (extents.size(), InstanceExtent());
-  if (measuredInstances (extents).size() < 2)
-    return true;
   // A pixel lies near another copy's surface, or not; the ones that do not, in a grid of their
   // own.
   std::vector<std::vector<bool>> shared (extents.size());
   CopyGrid unshared (radius);
   for (std::size_t i = 0; i < extents.size(); ++i)
     for (const auto& p : in_model[i]) {
-      shared[i].push_back (grid.near (p, i, false));
+      shared[i].push_back (grid.nearOtherCopy (p, i));
       if (!shared[i].back())
         unshared.add (p, i);
     }
   // Kept: the shared pixels farther than the radius from the copy's unshared ones. A neighbour
-  // lying flush with the copy is shared up to the radius past the copy's edge, where the other
-  // copies' surfaces end; that band goes, and the box ends at the copy's edge.
+  // lying flush with the copy is shared up to the radius past the other copies' edges; that
+  // band goes with the rest of the neighbour, and the box ends at the copy's edge.
   for (std::size_t i = 0; i < extents.size(); ++i) {
     pcl::Indices kept;
     for (std::size_t k = 0; k < in_model[i].size(); ++k)
-      if (shared[i][k] && !unshared.near (in_model[i][k], i, true))
+      if (shared[i][k] && !unshared.nearCopy (in_model[i][k], i))
         kept.push_back (pixels[i][k]);
     if (!fitInstanceBox (organized, plane, kept, consensus[i]))
       consensus[i] = InstanceExtent();

@@ -53,23 +53,6 @@ rectangleOf (const cv::RotatedRect& rectangle)
   return footprint;
 }
 
-/** What is wrong with flatTopParts()' or flatTopSizes()' cloud or surface; empty if nothing.
-  */
-const char*
-surfaceProblem (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                const pcl::Indices& surface)
-{
-  if (!organized.isOrganized() || organized.empty())
-    return "The cloud is not organized";
-  const auto count = static_cast<pcl::index_t> (organized.size());
-  if (std::any_of (surface.begin(), surface.end(), [&] (pcl::index_t p) {
-        return p < 0 || p >= count ||
-               !organized[static_cast<std::size_t> (p)].getVector3fMap().allFinite();
-      }))
-    return "A surface pixel lies outside the cloud or has no point";
-  return nullptr;
-}
-
 /** By pixel of `organized`: 1 where `surface` holds a level point (the normal through the
   * points kNormalReach pixels away on either side within 25 deg of the plane's).
   */
@@ -215,7 +198,7 @@ flatTopParts (const pcl::PointCloud<pcl::PointXYZ>& organized,
               std::vector<pcl::Indices>& parts)
 {
   parts.clear();
-  if (const char* problem = surfaceProblem (organized, surface)) {
+  if (const char* problem = surfacePixelsProblem (organized, surface)) {
     PCL_ERROR ("[mid::flatTopParts] %s.\n", problem);
     return false;
   }
@@ -300,7 +283,7 @@ flatTopSizes (const pcl::PointCloud<pcl::PointXYZ>& organized,
               std::vector<Eigen::Vector3f>& sizes)
 {
   sizes.clear();
-  if (const char* problem = surfaceProblem (organized, surface)) {
+  if (const char* problem = surfacePixelsProblem (organized, surface)) {
     PCL_ERROR ("[mid::flatTopSizes] %s.\n", problem);
     return false;
   }

@@ -321,6 +321,21 @@ measureInstanceExtent (const pcl::PointCloud<pcl::PointXYZ>& organized,
          fitInstanceBox (organized, plane, surfaces.front(), extent);
 }
 
+const char*
+surfacePixelsProblem (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const pcl::Indices& surface)
+{
+  if (!organized.isOrganized() || organized.empty())
+    return "The cloud is not organized";
+  const auto count = static_cast<pcl::index_t> (organized.size());
+  if (std::any_of (surface.begin(), surface.end(), [&] (pcl::index_t p) {
+        return p < 0 || p >= count ||
+               !organized[static_cast<std::size_t> (p)].getVector3fMap().allFinite();
+      }))
+    return "A surface pixel lies outside the cloud or has no point";
+  return nullptr;
+}
+
 bool
 fitInstanceBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
                 const Eigen::Vector4f& plane,

@@ -6,6 +6,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -86,8 +87,9 @@ ModelSizeMerger::merge (ObjectModels& models) const
     PCL_ERROR ("[mid::ModelSizeMerger::merge] %s.\n", problem.c_str());
     return false;
   }
-  if (!(consensus_radius_ >= 0.0f)) {
-    PCL_ERROR ("[mid::ModelSizeMerger::merge] the consensus radius must be >= 0.\n");
+  if (!(consensus_radius_ >= 0.0f) || !std::isfinite (consensus_radius_)) {
+    PCL_ERROR ("[mid::ModelSizeMerger::merge] the consensus radius must be finite and "
+               ">= 0.\n");
     return false;
   }
   if (models.size() < 2)
@@ -151,7 +153,7 @@ ModelSizeMerger::merge (ObjectModels& models) const
       models.erase (models.begin() + static_cast<std::ptrdiff_t> (b));
       sizes.erase (sizes.begin() + static_cast<std::ptrdiff_t> (b));
       // The merged model's boxes are no longer its instances' (mergeModel() renumbers them):
-      // it merges on by its size alone.
+      // it merges on by its size alone. (So the boxes need no swap above.)
       boxes[a] = ModelBoxes();
       boxes.erase (boxes.begin() + static_cast<std::ptrdiff_t> (b));
     }

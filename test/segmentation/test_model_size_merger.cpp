@@ -14,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -366,6 +367,13 @@ TEST (ModelSizeMerger, MergesAModelWhoseCopiesEachLieFlushWithANeighbour)
   // and 3, and no way but the consensus boxes joins the two models.
   const Boxes scene (mid::test::twoJoinedTwoApart());
   ASSERT_NO_FATAL_FAILURE (expectMergedWithPosed (scene, {0, 1, 2, 3}));
+  // In the other order, the whole boxes' size is looked for among the joined ones' consensus
+  // boxes from the other side.
+  mid::ObjectModels swapped = twoModels (scene);
+  std::swap (swapped[0], swapped[1]);
+  ASSERT_TRUE (mergerFor (scene).merge (swapped));
+  ASSERT_EQ (swapped.size(), 1u);
+  EXPECT_EQ (swapped[0].instances.size(), 4u);
 
   mid::ModelSizeMerger without = mergerFor (scene);
   without.setConsensusRadius (0.0f);
@@ -445,9 +453,13 @@ TEST (ModelSizeMerger, RefusesBadInputAndLeavesTheModels)
   no_step.setMaxStep (0.0f);
   refuses (no_step, original);
 
-  mid::ModelSizeMerger no_radius = mergerFor (scene);
-  no_radius.setConsensusRadius (-0.005f);
-  refuses (no_radius, original);
+  for (const float radius : {-0.005f,
+                             std::numeric_limits<float>::quiet_NaN(),
+                             std::numeric_limits<float>::infinity()}) {
+    mid::ModelSizeMerger no_radius = mergerFor (scene);
+    no_radius.setConsensusRadius (radius);
+    refuses (no_radius, original);
+  }
 
   mid::ModelSizeMerger nobody = mergerFor (scene);
   nobody.setMinAgreeing (0);

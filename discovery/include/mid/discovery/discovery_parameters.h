@@ -353,7 +353,7 @@ struct DiscoveryParameters
     * of the other's copies (ModelSizeMerger::setConsensusRadius()): the box of the pixels of a
     * copy's surface that lie within this distance (metres, >= 0; 0: no consensus boxes) of
     * another copy's surface in the model frame, without the neighbour the copy lies flush
-    * with. Seed 3: instance F1 0.931 -> 0.934 (session 48, doc/benchmark.md).
+    * with. Seed 3: instance F1 0.931 -> 0.937 (session 48, doc/benchmark.md).
     */
   float size_merge_consensus_radius = 0.02f;
   /** \brief After the size merge, drop the observations outside the box a model's copies

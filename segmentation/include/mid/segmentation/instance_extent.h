@@ -81,6 +81,13 @@ growInstanceSurfaces (const pcl::PointCloud<pcl::PointXYZ>& organized,
                       float plane_tolerance,
                       std::vector<pcl::Indices>& surfaces);
 
+/** \brief What is wrong with an organized frame and a surface's pixels in it: the frame not
+  * organized, or a pixel outside it or without a point; nullptr if nothing.
+  */
+const char*
+surfacePixelsProblem (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                      const pcl::Indices& surface);
+
 /** \brief Fit the box an object occupies on the support plane to its surface.
   *
   * The box stands on the plane: its footprint is the rectangle holding the surface's points
