@@ -18,29 +18,36 @@ namespace {
 using mid::test::kPrintedBoxSize;
 using Boxes = mid::test::RestingBoxes;
 
-/** The scene's support plane and the boxes of the instances of `model`, each measured on its
-  * own surface (measureInstanceBoxes()).
+/** Boxes 0 and 1 of twoJoinedTwoApart() (each lying flush with a neighbour, in a different
+  * place) as one model at their true poses, the table, and the boxes of the model's instances,
+  * each measured on its own surface (measureInstanceBoxes()).
   */
-void
-measure (const Boxes& scene,
-         const mid::ObjectModel& model,
-         Eigen::Vector4f& plane,
-         mid::InstanceExtents& extents)
+class ConsensusBoxes : public ::testing::Test
 {
-  const auto& organized = *scene.surface.organized;
-  ASSERT_TRUE (mid::fitSupportPlane (organized, 0.01f, 0.2f, plane));
-  std::vector<mid::InstanceExtents> per_model;
-  ASSERT_TRUE (mid::measureInstanceBoxes (organized,
-                                          plane,
-                                          scene.surface.keypoint_pixels,
-                                          {model},
-                                          0.008f,
-                                          0.3f,
-                                          0.01f,
-                                          per_model));
-  ASSERT_EQ (per_model.size(), 1u);
-  extents = per_model[0];
-}
+protected:
+  void
+  SetUp () override
+  {
+    const auto& organized = *scene.surface.organized;
+    ASSERT_TRUE (mid::fitSupportPlane (organized, 0.01f, 0.2f, plane));
+    std::vector<mid::InstanceExtents> per_model;
+    ASSERT_TRUE (mid::measureInstanceBoxes (organized,
+                                            plane,
+                                            scene.surface.keypoint_pixels,
+                                            {model},
+                                            0.008f,
+                                            0.3f,
+                                            0.01f,
+                                            per_model));
+    ASSERT_EQ (per_model.size(), 1u);
+    extents = per_model[0];
+  }
+
+  const Boxes scene{mid::test::twoJoinedTwoApart()};
+  const mid::ObjectModel model = scene.modelOf ({0, 1});
+  Eigen::Vector4f plane = Eigen::Vector4f::Zero();
+  mid::InstanceExtents extents;
+};
 
 /** The box's edges (ascending) agree with the printed box's within 6 mm. */
 bool
@@ -51,13 +58,8 @@ hasPrintedSize (const mid::InstanceExtent& box)
   return (box.size - truth).cwiseAbs().maxCoeff() < 0.006f;
 }
 
-TEST (ConsensusBoxes, MeasuresEachCopyWithoutTheNeighbourItLiesFlushWith)
+TEST_F (ConsensusBoxes, MeasuresEachCopyWithoutTheNeighbourItLiesFlushWith)
 {
-  const Boxes scene (mid::test::twoJoinedTwoApart());
-  const mid::ObjectModel model = scene.modelOf ({0, 1});
-  Eigen::Vector4f plane;
-  mid::InstanceExtents extents;
-  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
   ASSERT_EQ (extents.size(), 2u);
   // Measured on its own, each copy's box holds its neighbour: 0.18 or 0.24 long.
   for (const auto& box : extents)
@@ -94,17 +96,12 @@ TEST (ConsensusBoxes, MeasuresEachCopyWithoutTheNeighbourItLiesFlushWith)
   }
 }
 
-TEST (ConsensusBoxes, GivesNoBoxWithoutASecondMeasuredCopy)
+TEST_F (ConsensusBoxes, GivesNoBoxWithoutASecondMeasuredCopy)
 {
-  const Boxes scene (mid::test::twoJoinedTwoApart());
-  const mid::ObjectModel model = scene.modelOf ({0, 1});
-  Eigen::Vector4f plane;
-  mid::InstanceExtents extents;
-  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
   extents[1] = mid::InstanceExtent();
   mid::InstanceExtents consensus;
   ASSERT_TRUE (mid::consensusBoxes (
-      *scene.surface.organized, plane, model, extents, 0.005f, consensus));
+      *scene.surface.organized, plane, model, extents, 0.02f, consensus));
   ASSERT_EQ (consensus.size(), 2u);
   for (const auto& box : consensus) {
     EXPECT_TRUE (box.surface.empty());
@@ -112,13 +109,8 @@ TEST (ConsensusBoxes, GivesNoBoxWithoutASecondMeasuredCopy)
   }
 }
 
-TEST (ConsensusBoxes, RefusesBadInputWithNoBoxes)
+TEST_F (ConsensusBoxes, RefusesBadInputWithNoBoxes)
 {
-  const Boxes scene (mid::test::twoJoinedTwoApart());
-  const mid::ObjectModel model = scene.modelOf ({0, 1});
-  Eigen::Vector4f plane;
-  mid::InstanceExtents extents;
-  ASSERT_NO_FATAL_FAILURE (measure (scene, model, plane, extents));
   const auto& organized = *scene.surface.organized;
   const auto refused = [&] (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                             const mid::InstanceExtents& boxes,
