@@ -1,4 +1,5 @@
 #include <mid/registration/model_merging.h>
+#include <mid/registration/object_model.h>
 #include <mid/segmentation/consensus_boxes.h>
 #include <mid/segmentation/model_size.h>
 #include <mid/segmentation/model_size_merger.h>
@@ -77,6 +78,85 @@ boxesOfOneSize (const ObjectModel& a,
   return false;
 }
 
+/** Fewest pairs of copies that one relative pose of two models must make coincide before it
+  * replaces the transform of their boxes: one pair's own pose always makes that pair coincide.
+  */
+constexpr std::size_t kMinCoincidingPairs = 2;
+
+/** How many of a's instances coincide with an instance of b (each of b's at most once) when b's
+  * frame sits at `a_to_b` (x_b = a_to_b * x_a) in a's: within `max_angle` and `max_distance`
+  * at a's landmark centroid `center_a`, the two models' landmark centroids (`center_b` in b)
+  * placed less than `reach` apart.
+  */
+std::size_t
+coincidingPairs (const ObjectModel& a,
+                 const ObjectModel& b,
+                 const Eigen::Matrix4f& a_to_b,
+                 const Eigen::Vector3f& center_a,
+                 const Eigen::Vector3f& center_b,
+                 float reach,
+                 float max_angle,
+                 float max_distance)
+{
+  std::vector<bool> taken (b.instances.size(), false);
+  std::size_t pairs = 0;
+  for (const auto& first : a.instances)
+    for (std::size_t j = 0; j < b.instances.size(); ++j) {
+      const Eigen::Matrix4f& pose_b = b.instances[j].pose;
+      const Eigen::Vector3f gap =
+          (first.pose.topLeftCorner<3, 3>() * center_a +
+           first.pose.topRightCorner<3, 1>()) -
+          (pose_b.topLeftCorner<3, 3>() * center_b + pose_b.topRightCorner<3, 1>());
+      if (!taken[j] && gap.norm() < reach &&
+          posesCoincide (
+              first.pose, pose_b * a_to_b, center_a, max_angle, max_distance)) {
+        taken[j] = true;
+        ++pairs;
+        break;
+      }
+    }
+  return pairs;
+}
+
+/** Where b's frame sits in a's (x_b = result * x_a) when both models see the same copies:
+  * the boxes' transform `boxes_a_to_b` is right only up to a symmetry of the box, and two
+  * models of different parts of one product (the two ends of a carton, say) whose instances
+  * lie on the same copies are placed right by those copies' poses instead. The relative pose
+  * of one pair of nearby instances (their landmark centroids less than `reach` apart) replaces
+  * the boxes' transform when it makes at least kMinCoincidingPairs pairs of instances
+  * coincide (coincidingPairs()) and more than the boxes' transform does.
+  */
+Eigen::Matrix4f
+transformOfSharedCopies (const ObjectModel& a,
+                         const ObjectModel& b,
+                         const Eigen::Matrix4f& boxes_a_to_b,
+                         float reach,
+                         float max_angle,
+                         float max_distance)
+{
+  const Eigen::Vector3f center_a = landmarkCentroid (a);
+  const Eigen::Vector3f center_b = landmarkCentroid (b);
+  const auto pairs = [&] (const Eigen::Matrix4f& a_to_b) {
+    return coincidingPairs (
+        a, b, a_to_b, center_a, center_b, reach, max_angle, max_distance);
+  };
+  Eigen::Matrix4f best = boxes_a_to_b;
+  std::size_t most = std::max (pairs (boxes_a_to_b), kMinCoincidingPairs - 1);
+  for (const auto& first : a.instances)
+    for (const auto& second : b.instances) {
+      // second.pose * a_to_b = first.pose puts the pair at one pose.
+      const Eigen::Matrix4f a_to_b = second.pose.inverse() * first.pose;
+      if (!a_to_b.allFinite())
+        continue;
+      const std::size_t count = pairs (a_to_b);
+      if (count > most) {
+        most = count;
+        best = a_to_b;
+      }
+    }
+  return best;
+}
+
 } // namespace
 
 bool
@@ -143,10 +223,16 @@ ModelSizeMerger::merge (ObjectModels& models) const
         sizes[a].size = size;
         sizes[a].box_in_model = box_in_a;
       }
-      // One box frame in both models: x_b = box_in_b * box_in_a^-1 * x_a.
+      // One box frame in both models: x_b = box_in_b * box_in_a^-1 * x_a, unless the two
+      // see the same copies.
       mergeModel (models[a],
                   models[b],
-                  box_in_b * box_in_a.inverse(),
+                  transformOfSharedCopies (models[a],
+                                           models[b],
+                                           box_in_b * box_in_a.inverse(),
+                                           size.maxCoeff(),
+                                           duplicate_angle_,
+                                           duplicate_distance_),
                   {},
                   duplicate_angle_,
                   duplicate_distance_);

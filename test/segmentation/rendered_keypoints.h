@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <pcl/common/io.h>
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <vector>
@@ -68,10 +69,13 @@ struct RenderedKeypoints
   }
 
   /** \brief Add box `b` to `model` as an instance at its true pose (the model frame is the
-    * box's own frame): each keypoint on the box becomes a landmark, with its descriptor.
+    * box's own frame): each keypoint on the box becomes a landmark, with its descriptor; with
+    * `keep`, only those whose position in the box's frame it keeps.
     */
   void
-  addTruthInstance (std::size_t b, ObjectModel& model) const
+  addTruthInstance (std::size_t b,
+                    ObjectModel& model,
+                    const std::function<bool (const Eigen::Vector3f&)>& keep = {}) const
   {
     ModelInstance instance;
     instance.pose = scene.boxes[b].pose.matrix().cast<float>();
@@ -81,6 +85,8 @@ struct RenderedKeypoints
         continue;
       pcl::PointNormal landmark = (*keypoints)[k];
       landmark.getVector3fMap() = to_model * (*keypoints)[k].getVector3fMap();
+      if (keep && !keep (landmark.getVector3fMap()))
+        continue;
       landmark.getNormalVector3fMap() =
           to_model.linear() * (*keypoints)[k].getNormalVector3fMap();
       instance.keypoints.push_back (static_cast<pcl::index_t> (k));

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace mid {
@@ -84,15 +85,17 @@ struct RestingBoxes : RenderedKeypoints
   {}
 
   /** A model of the given boxes at their true poses, in the frame of the first box moved by
-    * `frame` (model -> box), so that two models' frames differ.
+    * `frame` (model -> box), so that two models' frames differ; with `keep`, of the keypoints
+    * alone whose position in their box's frame it keeps.
     */
   mid::ObjectModel
   modelOf (const std::vector<std::size_t>& boxes,
-           const Eigen::Isometry3f& frame = Eigen::Isometry3f::Identity()) const
+           const Eigen::Isometry3f& frame = Eigen::Isometry3f::Identity(),
+           const std::function<bool (const Eigen::Vector3f&)>& keep = {}) const
   {
     mid::ObjectModel model;
     for (const auto b : boxes)
-      addTruthInstance (b, model);
+      addTruthInstance (b, model, keep);
     for (auto& instance : model.instances)
       instance.pose = instance.pose * frame.matrix();
     const Eigen::Isometry3f to_model = frame.inverse();

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -386,6 +387,48 @@ TEST (ModelSizeMerger, MergesAModelWhoseCopiesEachLieFlushWithANeighbour)
   models = twoModels (other_size);
   ASSERT_TRUE (mergerFor (other_size).merge (models));
   EXPECT_EQ (models.size(), 2u);
+}
+
+TEST (ModelSizeMerger, MergesModelsOfTwoEndsOfTheSameCopiesAtTheCopiesPoses)
+{
+  // Both models see all four boxes, the first the halves at negative x (in the box's frame),
+  // the second, in a frame of its own, the other halves: no landmark is shared, and the two
+  // instances on a box split its surface, so each model takes the size of half a box. Those
+  // sizes agree, but the boxes' frames place the second model's half on the first's (up to a
+  // half turn), which would leave two instances on every box. The copies' poses place it
+  // beside it, where it lies on each box.
+  const Boxes scene (fourBoxes());
+  const auto negative_x = [] (const Eigen::Vector3f& p) { return p.x() < 0.0f; };
+  const auto positive_x = [] (const Eigen::Vector3f& p) { return p.x() >= 0.0f; };
+  const Eigen::Isometry3f other_frame =
+      Eigen::Translation3f (0.02f, -0.01f, 0.005f) *
+      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, 2.0f, 0.5f).normalized());
+  mid::ObjectModels models = {
+      scene.modelOf ({0, 1, 2, 3}, Eigen::Isometry3f::Identity(), negative_x),
+      scene.modelOf ({0, 1, 2, 3}, other_frame, positive_x)};
+  ASSERT_TRUE (mergerFor (scene).merge (models));
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 4u);
+  std::set<int> boxes;
+  for (const auto& instance : models[0].instances) {
+    const int b = scene.boxOf (instance.keypoints);
+    ASSERT_GE (b, 0);
+    boxes.insert (b);
+    // The whole box is one instance, at the box's true pose (the first model's frame is box
+    // 0's), not merely up to a symmetry of the box.
+    EXPECT_EQ (instance.keypoints.size(), scene.on ({b}).size()) << "box " << b;
+    const Eigen::Isometry3d& truth =
+        scene.scene.boxes[static_cast<std::size_t> (b)].pose;
+    const Eigen::AngleAxisf error (truth.linear().cast<float>().transpose() *
+                                   instance.pose.topLeftCorner<3, 3>());
+    EXPECT_LT (error.angle(), 3.0f * static_cast<float> (M_PI) / 180.0f) << "box " << b;
+    EXPECT_LT (
+        (instance.pose.topRightCorner<3, 1>() - truth.translation().cast<float>())
+            .norm(),
+        0.004f)
+        << "box " << b;
+  }
+  EXPECT_EQ (boxes.size(), 4u);
 }
 
 TEST (InstanceExtent, RefusesPixelsOutsideTheFrameOrWithoutAPoint)

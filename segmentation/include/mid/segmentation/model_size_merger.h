@@ -26,6 +26,12 @@ namespace mid {
   *    model into the larger: the boxes' frames (axes along the edges in ascending length)
   *    give the transform between the model frames, so the merged poses are those of the box,
   *    right up to the box's symmetries (a half turn of a box, a quarter turn of a square one).
+  *    Two models that see different parts of the same copies (the two ends of a carton's face,
+  *    whose instances split each copy's surface between them, so that each model takes the
+  *    size of a part) are placed by the copies instead: the relative pose of one pair of their
+  *    instances, lying within the size's longest edge of each other, replaces the boxes'
+  *    transform when it makes two or more pairs coincide, and more than that transform does;
+  *    each such pair becomes one instance.
   *    A model whose size disagrees is still merged when one of its measured copies has the
   *    other model's size (the box of that copy then gives the transform): with two copies,
   *    one joined with a neighbour or partly hidden, a model takes the size of the smaller
