@@ -85,36 +85,32 @@ constexpr std::size_t kMinCoincidingPairs = 2;
 
 /** How many of a's instances coincide with an instance of b (each of b's at most once) when b's
   * frame sits at `a_to_b` (x_b = a_to_b * x_a) in a's: within `max_angle` and `max_distance`
-  * at a's landmark centroid `center_a`, the two models' landmark centroids (`center_b` in b)
-  * placed less than `reach` apart.
+  * at a's landmark centroid `center_a`, among the pairs `nearby` flags (nearby[i][j]: a's
+  * instance i and b's instance j lie close enough to be one copy).
   */
 std::size_t
 coincidingPairs (const ObjectModel& a,
                  const ObjectModel& b,
                  const Eigen::Matrix4f& a_to_b,
                  const Eigen::Vector3f& center_a,
-                 const Eigen::Vector3f& center_b,
-                 float reach,
+                 const std::vector<std::vector<bool>>& nearby,
                  float max_angle,
                  float max_distance)
 {
   std::vector<bool> taken (b.instances.size(), false);
   std::size_t pairs = 0;
-  for (const auto& first : a.instances)
-    for (std::size_t j = 0; j < b.instances.size(); ++j) {
-      const Eigen::Matrix4f& pose_b = b.instances[j].pose;
-      const Eigen::Vector3f gap =
-          (first.pose.topLeftCorner<3, 3>() * center_a +
-           first.pose.topRightCorner<3, 1>()) -
-          (pose_b.topLeftCorner<3, 3>() * center_b + pose_b.topRightCorner<3, 1>());
-      if (!taken[j] && gap.norm() < reach &&
-          posesCoincide (
-              first.pose, pose_b * a_to_b, center_a, max_angle, max_distance)) {
+  for (std::size_t i = 0; i < a.instances.size(); ++i)
+    for (std::size_t j = 0; j < b.instances.size(); ++j)
+      if (nearby[i][j] && !taken[j] &&
+          posesCoincide (a.instances[i].pose,
+                         b.instances[j].pose * a_to_b,
+                         center_a,
+                         max_angle,
+                         max_distance)) {
         taken[j] = true;
         ++pairs;
         break;
       }
-    }
   return pairs;
 }
 
@@ -122,9 +118,9 @@ coincidingPairs (const ObjectModel& a,
   * the boxes' transform `boxes_a_to_b` is right only up to a symmetry of the box, and two
   * models of different parts of one product (the two ends of a carton, say) whose instances
   * lie on the same copies are placed right by those copies' poses instead. The relative pose
-  * of one pair of nearby instances (their landmark centroids less than `reach` apart) replaces
-  * the boxes' transform when it makes at least kMinCoincidingPairs pairs of instances
-  * coincide (coincidingPairs()) and more than the boxes' transform does.
+  * of one pair of instances replaces the boxes' transform when it makes at least
+  * kMinCoincidingPairs pairs of nearby instances (their landmark centroids less than `reach`
+  * apart) coincide (coincidingPairs()) and more than the boxes' transform does.
   */
 Eigen::Matrix4f
 transformOfSharedCopies (const ObjectModel& a,
@@ -136,9 +132,19 @@ transformOfSharedCopies (const ObjectModel& a,
 {
   const Eigen::Vector3f center_a = landmarkCentroid (a);
   const Eigen::Vector3f center_b = landmarkCentroid (b);
+  const auto placed = [] (const Eigen::Matrix4f& pose, const Eigen::Vector3f& point) {
+    return Eigen::Vector3f (pose.topLeftCorner<3, 3>() * point +
+                            pose.topRightCorner<3, 1>());
+  };
+  std::vector<std::vector<bool>> nearby (a.instances.size(),
+                                         std::vector<bool> (b.instances.size()));
+  for (std::size_t i = 0; i < a.instances.size(); ++i)
+    for (std::size_t j = 0; j < b.instances.size(); ++j)
+      nearby[i][j] = (placed (a.instances[i].pose, center_a) -
+                      placed (b.instances[j].pose, center_b))
+                         .norm() < reach;
   const auto pairs = [&] (const Eigen::Matrix4f& a_to_b) {
-    return coincidingPairs (
-        a, b, a_to_b, center_a, center_b, reach, max_angle, max_distance);
+    return coincidingPairs (a, b, a_to_b, center_a, nearby, max_angle, max_distance);
   };
   Eigen::Matrix4f best = boxes_a_to_b;
   std::size_t most = std::max (pairs (boxes_a_to_b), kMinCoincidingPairs - 1);
