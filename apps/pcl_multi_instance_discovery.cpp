@@ -183,6 +183,10 @@ printHelp (const char* program)
       "size merge: a copy's pixels within R of another copy's make its consensus box, "
       "metres (0: none)",
       static_cast<double> (d.size_merge_consensus_radius));
+  line ("-print_share S",
+        "support prints: smallest share of an instance's keypoints within 1 cm of the "
+        "table",
+        static_cast<double> (d.support_print_min_share));
   line ("-repeat_rot A",
         "repeated prints: largest turn between two instances on one object, degrees",
         static_cast<double> (d.repeated_print_max_rotation) * 180.0 / M_PI);
@@ -300,6 +304,10 @@ printHelp (const char* program)
       "occupy\n");
   print_info ("                      on the table (the paper's behaviour)\n");
   print_info (
+      "  -keep_support_prints  keep the instances that lie flat in the table's plane "
+      "(prints\n");
+  print_info ("                      on it, sheets of paper; the paper's behaviour)\n");
+  print_info (
       "  -keep_repeated_prints  keep the instances of a model that lie on one object "
       "with\n");
   print_info (
@@ -386,6 +394,8 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-size_rel_tol", 1},
                                       {"-size_consensus", 1},
                                       {"-keep_outside_box", 0},
+                                      {"-keep_support_prints", 0},
+                                      {"-print_share", 1},
                                       {"-keep_repeated_prints", 0},
                                       {"-repeat_rot", 1},
                                       {"-repeat_shift", 1},
@@ -499,6 +509,8 @@ parseOptions (int argc, char** argv, Options& options)
   p.split_by_size = !pcl::console::find_switch (argc, argv, "-no_size_split");
   p.merge_by_size = !pcl::console::find_switch (argc, argv, "-no_size_merge");
   p.prune_outside_box = !pcl::console::find_switch (argc, argv, "-keep_outside_box");
+  p.remove_support_prints =
+      !pcl::console::find_switch (argc, argv, "-keep_support_prints");
   p.remove_repeated_prints =
       !pcl::console::find_switch (argc, argv, "-keep_repeated_prints");
   p.prune_observations = !pcl::console::find_switch (argc, argv, "-keep_unexplained");
@@ -561,6 +573,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-size_tol", p.size_tolerance) &&
       parseNumber (argc, argv, "-size_rel_tol", p.relative_size_tolerance) &&
       parseNumber (argc, argv, "-size_consensus", p.size_merge_consensus_radius) &&
+      parseNumber (argc, argv, "-print_share", p.support_print_min_share) &&
       parseDegrees (argc, argv, "-repeat_rot", p.repeated_print_max_rotation) &&
       parseNumber (argc, argv, "-repeat_shift", p.repeated_print_max_shift) &&
       parseNumber (argc, argv, "-repeat_along", p.repeated_print_max_shift_along) &&

@@ -310,6 +310,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "box_turn_min_gain",
              static_cast<double> (p.box_turn_min_gain),
              "in [0, 2]");
+  c.require (p.support_print_min_share > 0.0f && p.support_print_min_share <= 1.0f,
+             "support_print_min_share",
+             static_cast<double> (p.support_print_min_share),
+             "in (0, 1]");
   c.require (p.observation_max_residual > 0.0f &&
                  std::isfinite (p.observation_max_residual),
              "observation_max_residual",

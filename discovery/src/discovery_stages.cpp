@@ -216,6 +216,7 @@ discoverFromKeypoints (const DiscoveryParameters& p,
       detail::removeInterpenetrating (p, frame, plane, result) &&
       detail::removeDisagreeingSizes (p, frame, plane, result) &&
       detail::resolveBoxTurns (p, frame, plane, result) &&
+      detail::removeSupportPrints (p, frame, plane, result) &&
       detail::pruneObservations (p, result)) {
     // Merges add landmarks in the frame of the model they join: every model is centred again.
     for (auto& model : result.models)

@@ -16,6 +16,7 @@
 #include <mid/segmentation/repeated_print_filter.h>
 #include <mid/segmentation/size_disagreement_filter.h>
 #include <mid/segmentation/size_instance_search.h>
+#include <mid/segmentation/support_print_filter.h>
 #include <mid/segmentation/surface_pose_refinement.h>
 
 #include <pcl/common/io.h>
@@ -146,6 +147,25 @@ refineOnSurface (const DiscoveryParameters& p,
         return false;
   }
   result.timing_ms.emplace_back ("surface", watch.getTime());
+  return true;
+}
+
+bool
+removeSupportPrints (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     FramePlane& plane,
+                     DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  if (p.remove_support_prints && frame.organized) {
+    SupportPrintFilter filter;
+    setUpPlaneMeasurement (frame, result, plane, filter);
+    filter.setMinShareOnPlane (p.support_print_min_share);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back ("support_prints", watch.getTime());
   return true;
 }
 

@@ -44,6 +44,16 @@ refineOnSurface (const DiscoveryParameters& p,
                  const KeypointSurface& frame,
                  DiscoveryResult& result);
 
+/** Remove the instances that lie flat in the support plane, prints on the table
+  * (DiscoveryParameters::remove_support_prints), when the organized frame is known; times the
+  * "support_prints" stage either way.
+  */
+bool
+removeSupportPrints (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     FramePlane& plane,
+                     DiscoveryResult& result);
+
 /** Look for more copies of each model with the guided search, the models extended for it by
   * the keypoints their copies show inside their boxes on the table (ModelBoxExtender,
   * DiscoveryParameters::box_search), among the keypoints off the table, then keep one instance

@@ -299,7 +299,9 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-min_ratio -0.5",
                              "-disagree_surrounded 1.5",
                              "-disagree_copies 1",
-                             "-box_turn_gain 2.5"}) {
+                             "-box_turn_gain 2.5",
+                             "-print_share 0",
+                             "-print_share 1.5"}) {
     SCOPED_TRACE (option);
     expectRefused (path ("scene.pcd") + " " + option, "Invalid parameter");
   }

@@ -76,7 +76,8 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
                             "box_search",  "surface",          "size_split",
                             "size_merge",  "box_pruning",      "repeated_prints",
                             "size_search", "interpenetration", "size_disagreement",
-                            "box_turns",   "observations",     "total"})
+                            "box_turns",   "support_prints",   "observations",
+                            "total"})
     EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
         << stage;
   // One instance on each copy: its keypoints' box within the copy (plus SIFT's outline margin).

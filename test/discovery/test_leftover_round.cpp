@@ -143,8 +143,8 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
       EXPECT_GE (k, 90); // A's 3 x 30 keypoints come first
   // Without an organized frame the patches, the search from the boxes, the surface
   // refinement, the size split and merge, the removal of repeated prints, the size search, the
-  // removal of interpenetrating instances and of models of disagreeing sizes do not run, but
-  // are timed; the pruning of the observations runs.
+  // removal of interpenetrating instances, of models of disagreeing sizes and of prints on the
+  // table do not run, but are timed; the pruning of the observations runs.
   const std::vector<std::string> last = {"leftovers",
                                          "patches",
                                          "box_search",
@@ -157,6 +157,7 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
                                          "interpenetration",
                                          "size_disagreement",
                                          "box_turns",
+                                         "support_prints",
                                          "observations"};
   ASSERT_GE (result.timing_ms.size(), last.size());
   for (std::size_t i = 0; i < last.size(); ++i)

@@ -321,6 +321,41 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
   expectOneObjectOfAllFour (mid::DiscoveryParameters());
 }
 
+TEST (MultiInstanceDiscovery, ReportsNoObjectOfSheetsLyingFlatOnTheTable)
+{
+  // Two cookie boxes stand 4 cm off the table; two sheets 2 mm thick with one print lie flat
+  // on it, like the marker sheets around a bin. The sheets repeat, yet are the table's print,
+  // not an object to pick: they make a model only with the support prints kept.
+  const double table = 0.95;
+  const Eigen::Vector3d box (0.12, 0.09, 0.04), sheet (0.12, 0.09, 0.002);
+  const auto scene = mid::test::renderBoxes (
+      {{kCookies, box, boxPose (-0.16, -0.1, table - 0.5 * box.z(), 10.0)},
+       {kJuice, sheet, boxPose (0.16, -0.12, table - 0.5 * sheet.z(), -35.0)},
+       {kCookies, box, boxPose (0.17, 0.11, table - 0.5 * box.z(), 160.0)},
+       {kJuice, sheet, boxPose (-0.15, 0.12, table - 0.5 * sheet.z(), 70.0)}},
+      table);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryParameters kept;
+  kept.remove_support_prints = false;
+  discovery.setParameters (kept);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  std::set<std::set<int>> found;
+  for (const auto& model : result.models) {
+    const auto boxes = boxesOf (scene, result, model);
+    found.insert (std::set<int> (boxes.begin(), boxes.end()));
+  }
+  EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
+
+  discovery.setParameters (mid::DiscoveryParameters());
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto boxes = boxesOf (scene, result, result.models[0]);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 2}));
+  expectRelativePosesMatch (scene, result.models[0], boxes, 2.0, 0.005);
+}
+
 TEST (MultiInstanceDiscovery, FindsCopiesThatShareNoSurfaceByTheirSize)
 {
   // Two boxes of one size on a table, each showing a print the other does not (like two
@@ -592,6 +627,11 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   refuses (turns, "box_turn_min_gain");
   turns.box_turn_min_gain = std::numeric_limits<float>::quiet_NaN();
   refuses (turns, "box_turn_min_gain");
+  mid::DiscoveryParameters prints;
+  prints.support_print_min_share = 0.0f;
+  refuses (prints, "support_print_min_share");
+  prints.support_print_min_share = 1.5f;
+  refuses (prints, "support_print_min_share");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

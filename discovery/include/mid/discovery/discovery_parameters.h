@@ -442,6 +442,19 @@ struct DiscoveryParameters
   bool resolve_box_turns = true;
   float box_turn_min_gain = 0.1f;
   ///@}
+  /** \brief Then remove the instances that lie flat in the support plane: at least
+    * support_print_min_share (in (0, 1]) of their keypoints within 1 cm of it, and the surface
+    * around them on it too; prints on the table such as sheets of paper with one layout, not
+    * copies resting on it (not in the paper; SupportPrintFilter). Only where the plane is seen
+    * to support what was found (an instance stands off it, none lies behind it). A model left
+    * with one instance goes. Objects thinner than 1 cm lying flat on the table count as
+    * prints. Needs the organized frame. On the IC-BIN frames it removes the objects made of
+    * marker sheets (doc/benchmark.md, session 50).
+    */
+  ///@{
+  bool remove_support_prints = true;
+  float support_print_min_share = 0.8f;
+  ///@}
   /** \brief Last, drop the observations that an instance's pose does not explain (not in the
     * paper; pruneUnexplainedObservations()): a keypoint farther than
     * observation_max_residual (metres, > 0; the paper's inlier threshold) from where the pose
