@@ -103,6 +103,30 @@ modelTurned (const ObjectModel& model, const ModelInstances& before)
   return false;
 }
 
+/** Run a step that removes instances from the models (`Filter::filter (models, removed)`)
+  * when `enabled` and the organized frame is known, after `configure` gave it its inputs and
+  * settings; times `stage` either way.
+  */
+template <typename Filter, typename Configure>
+bool
+removeByFilter (const char* stage,
+                bool enabled,
+                const KeypointSurface& frame,
+                DiscoveryResult& result,
+                const Configure& configure)
+{
+  pcl::StopWatch watch;
+  if (enabled && frame.organized) {
+    Filter filter;
+    configure (filter);
+    std::size_t removed = 0;
+    if (!filter.filter (result.models, removed))
+      return false;
+  }
+  result.timing_ms.emplace_back (stage, watch.getTime());
+  return true;
+}
+
 } // namespace
 
 KeypointSurface
@@ -156,17 +180,15 @@ removeSupportPrints (const DiscoveryParameters& p,
                      FramePlane& plane,
                      DiscoveryResult& result)
 {
-  pcl::StopWatch watch;
-  if (p.remove_support_prints && frame.organized) {
-    SupportPrintFilter filter;
-    setUpPlaneMeasurement (frame, result, plane, filter);
-    filter.setMinShareOnPlane (p.support_print_min_share);
-    std::size_t removed = 0;
-    if (!filter.filter (result.models, removed))
-      return false;
-  }
-  result.timing_ms.emplace_back ("support_prints", watch.getTime());
-  return true;
+  return removeByFilter<SupportPrintFilter> (
+      "support_prints",
+      p.remove_support_prints,
+      frame,
+      result,
+      [&] (SupportPrintFilter& filter) {
+        setUpPlaneMeasurement (frame, result, plane, filter);
+        filter.setMinShareOnPlane (p.support_print_min_share);
+      });
 }
 
 bool
@@ -277,20 +299,18 @@ removeRepeatedPrints (const DiscoveryParameters& p,
                       FramePlane& plane,
                       DiscoveryResult& result)
 {
-  pcl::StopWatch watch;
-  if (p.remove_repeated_prints && frame.organized) {
-    RepeatedPrintFilter filter;
-    setUpPlaneMeasurement (frame, result, plane, filter);
-    filter.setMaxRotation (p.repeated_print_max_rotation);
-    filter.setMaxShiftRatio (p.repeated_print_max_shift);
-    filter.setMaxShiftAlongWidth (p.repeated_print_max_shift_along);
-    filter.setMinInsideShare (p.repeated_print_min_inside);
-    std::size_t removed = 0;
-    if (!filter.filter (result.models, removed))
-      return false;
-  }
-  result.timing_ms.emplace_back ("repeated_prints", watch.getTime());
-  return true;
+  return removeByFilter<RepeatedPrintFilter> (
+      "repeated_prints",
+      p.remove_repeated_prints,
+      frame,
+      result,
+      [&] (RepeatedPrintFilter& filter) {
+        setUpPlaneMeasurement (frame, result, plane, filter);
+        filter.setMaxRotation (p.repeated_print_max_rotation);
+        filter.setMaxShiftRatio (p.repeated_print_max_shift);
+        filter.setMaxShiftAlongWidth (p.repeated_print_max_shift_along);
+        filter.setMinInsideShare (p.repeated_print_min_inside);
+      });
 }
 
 bool
@@ -323,17 +343,15 @@ removeInterpenetrating (const DiscoveryParameters& p,
                         FramePlane& plane,
                         DiscoveryResult& result)
 {
-  pcl::StopWatch watch;
-  if (p.remove_interpenetrating && frame.organized) {
-    InterpenetrationFilter filter;
-    setUpBoxMeasurement (p, frame, result, plane, filter);
-    filter.setMaxCentreDistance (p.interpenetration_max_centre_distance);
-    std::size_t removed = 0;
-    if (!filter.filter (result.models, removed))
-      return false;
-  }
-  result.timing_ms.emplace_back ("interpenetration", watch.getTime());
-  return true;
+  return removeByFilter<InterpenetrationFilter> (
+      "interpenetration",
+      p.remove_interpenetrating,
+      frame,
+      result,
+      [&] (InterpenetrationFilter& filter) {
+        setUpBoxMeasurement (p, frame, result, plane, filter);
+        filter.setMaxCentreDistance (p.interpenetration_max_centre_distance);
+      });
 }
 
 bool
@@ -342,18 +360,16 @@ removeDisagreeingSizes (const DiscoveryParameters& p,
                         FramePlane& plane,
                         DiscoveryResult& result)
 {
-  pcl::StopWatch watch;
-  if (p.remove_disagreeing_sizes && frame.organized) {
-    SizeDisagreementFilter filter;
-    setUpBoxMeasurement (p, frame, result, plane, filter);
-    filter.setMaxSurroundedShare (p.size_disagreement_max_surrounded);
-    filter.setMinCopies (p.size_disagreement_min_copies);
-    std::size_t removed = 0;
-    if (!filter.filter (result.models, removed))
-      return false;
-  }
-  result.timing_ms.emplace_back ("size_disagreement", watch.getTime());
-  return true;
+  return removeByFilter<SizeDisagreementFilter> (
+      "size_disagreement",
+      p.remove_disagreeing_sizes,
+      frame,
+      result,
+      [&] (SizeDisagreementFilter& filter) {
+        setUpBoxMeasurement (p, frame, result, plane, filter);
+        filter.setMaxSurroundedShare (p.size_disagreement_max_surrounded);
+        filter.setMinCopies (p.size_disagreement_min_copies);
+      });
 }
 
 bool
