@@ -304,10 +304,6 @@ printHelp (const char* program)
       "occupy\n");
   print_info ("                      on the table (the paper's behaviour)\n");
   print_info (
-      "  -keep_support_prints  keep the instances that lie flat in the table's plane "
-      "(prints\n");
-  print_info ("                      on it, sheets of paper; the paper's behaviour)\n");
-  print_info (
       "  -keep_repeated_prints  keep the instances of a model that lie on one object "
       "with\n");
   print_info (
@@ -327,6 +323,10 @@ printHelp (const char* program)
       "when\n");
   print_info (
       "                      their print says another (the paper's behaviour)\n");
+  print_info (
+      "  -keep_support_prints  keep the instances that lie flat in the table's plane "
+      "(prints\n");
+  print_info ("                      on it, sheets of paper; the paper's behaviour)\n");
   print_info (
       "  -keep_unexplained   keep the observations an instance's pose does not explain "
       "(the\n");

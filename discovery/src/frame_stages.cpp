@@ -175,23 +175,6 @@ refineOnSurface (const DiscoveryParameters& p,
 }
 
 bool
-removeSupportPrints (const DiscoveryParameters& p,
-                     const KeypointSurface& frame,
-                     FramePlane& plane,
-                     DiscoveryResult& result)
-{
-  return removeByFilter<SupportPrintFilter> (
-      "support_prints",
-      p.remove_support_prints,
-      frame,
-      result,
-      [&] (SupportPrintFilter& filter) {
-        setUpPlaneMeasurement (frame, result, plane, filter);
-        filter.setMinShareOnPlane (p.support_print_min_share);
-      });
-}
-
-bool
 searchFromBoxes (const DiscoveryParameters& p,
                  const KeypointSurface& frame,
                  FramePlane& plane,
@@ -403,6 +386,23 @@ resolveBoxTurns (const DiscoveryParameters& p,
   }
   result.timing_ms.emplace_back ("box_turns", watch.getTime());
   return true;
+}
+
+bool
+removeSupportPrints (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     FramePlane& plane,
+                     DiscoveryResult& result)
+{
+  return removeByFilter<SupportPrintFilter> (
+      "support_prints",
+      p.remove_support_prints,
+      frame,
+      result,
+      [&] (SupportPrintFilter& filter) {
+        setUpPlaneMeasurement (frame, result, plane, filter);
+        filter.setMinShareOnPlane (p.support_print_min_share);
+      });
 }
 
 bool

@@ -44,16 +44,6 @@ refineOnSurface (const DiscoveryParameters& p,
                  const KeypointSurface& frame,
                  DiscoveryResult& result);
 
-/** Remove the instances that lie flat in the support plane, prints on the table
-  * (DiscoveryParameters::remove_support_prints), when the organized frame is known; times the
-  * "support_prints" stage either way.
-  */
-bool
-removeSupportPrints (const DiscoveryParameters& p,
-                     const KeypointSurface& frame,
-                     FramePlane& plane,
-                     DiscoveryResult& result);
-
 /** Look for more copies of each model with the guided search, the models extended for it by
   * the keypoints their copies show inside their boxes on the table (ModelBoxExtender,
   * DiscoveryParameters::box_search), among the keypoints off the table, then keep one instance
@@ -144,6 +134,16 @@ resolveBoxTurns (const DiscoveryParameters& p,
                  const KeypointSurface& frame,
                  FramePlane& plane,
                  DiscoveryResult& result);
+
+/** Remove the instances that lie flat in the support plane, prints on the table
+  * (DiscoveryParameters::remove_support_prints), when the organized frame is known; times the
+  * "support_prints" stage either way.
+  */
+bool
+removeSupportPrints (const DiscoveryParameters& p,
+                     const KeypointSurface& frame,
+                     FramePlane& plane,
+                     DiscoveryResult& result);
 
 /** Drop the observations that the instances' poses do not explain
   * (DiscoveryParameters::prune_observations); times the "observations" stage either way.

@@ -36,7 +36,8 @@ namespace mid {
   * removed). Objects thinner than the plane tolerance lying on the table (cards, stickers,
   * coins) are prints to this step: turn it off, or lower the tolerance, for those. Frames
   * without a support plane (none holding kMinSupportPlaneShare of the points) are left as
-  * they are. Deterministic.
+  * they are. No surface is grown: the growth settings of SupportPlaneMeasurement
+  * (setMaxStep(), setMaxRadius()) are not read. Deterministic.
   */
 class SupportPrintFilter : public SupportPlaneMeasurement
 {
