@@ -1,4 +1,5 @@
 #include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/order_statistics.h>
 #include <mid/segmentation/round_side.h>
 
 #include <Eigen/Eigenvalues>
@@ -103,16 +104,6 @@ inCrease (const pcl::PointCloud<pcl::PointXYZ>& organized, int pixel)
     return std::isfinite (z0) && std::isfinite (z1) &&
            z - 2.0f / (1.0f / z0 + 1.0f / z1) > kCreaseDepth;
   });
-}
-
-/** The value below which a share q of `values` lies (reorders them). */
-float
-quantile (std::vector<float>& values, float q)
-{
-  const auto at = values.begin() + static_cast<std::ptrdiff_t> (
-                                       q * static_cast<float> (values.size() - 1));
-  std::nth_element (values.begin(), at, values.end());
-  return *at;
 }
 
 /** Share of an object's length at either end whose points are left out of its cross-section:

@@ -1,3 +1,4 @@
+#include <mid/segmentation/order_statistics.h>
 #include <mid/segmentation/round_side.h>
 
 #include <pcl/console/print.h>
@@ -28,15 +29,6 @@ constexpr std::size_t kMaxSectionPoints = 400;
 constexpr float kMinReach = 0.8f;
 /** How far beyond the radius (metres) the points may reach on either side. */
 constexpr float kMaxOverreach = 2.0f * kCircleTolerance;
-
-/** The median of `values` (reorders them). */
-float
-median (std::vector<float>& values)
-{
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t> (values.size() / 2);
-  std::nth_element (values.begin(), middle, values.end());
-  return *middle;
-}
 
 } // namespace
 

@@ -1,4 +1,5 @@
 #include <mid/segmentation/instance_extent.h>
+#include <mid/segmentation/order_statistics.h>
 #include <mid/segmentation/support_print_filter.h>
 
 #include <pcl/console/print.h>
@@ -103,12 +104,7 @@ medianHeight (const KeypointCloud& keypoints,
   for (const auto k : instance.keypoints)
     heights.push_back (planeDistance (
         plane, keypoints[static_cast<std::size_t> (k)].getVector3fMap()));
-  if (heights.empty())
-    return 0.0f;
-  const auto middle =
-      heights.begin() + static_cast<std::ptrdiff_t> (heights.size() / 2);
-  std::nth_element (heights.begin(), middle, heights.end());
-  return *middle;
+  return heights.empty() ? 0.0f : median (heights);
 }
 
 /** True if `plane` is seen to support the found objects: an instance stands off it towards
