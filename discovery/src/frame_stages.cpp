@@ -412,7 +412,8 @@ pruneObservations (const DiscoveryParameters& p, DiscoveryResult& result)
   if (p.prune_observations)
     for (auto& model : result.models) {
       std::size_t dropped = 0;
-      if (!pruneUnexplainedObservations (*result.keypoints,
+      if (!pruneObservationsOnOtherCopies (*result.keypoints, model, dropped) ||
+          !pruneUnexplainedObservations (*result.keypoints,
                                          p.observation_max_residual,
                                          p.observation_box_margin,
                                          model,

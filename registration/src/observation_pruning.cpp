@@ -3,6 +3,9 @@
 
 #include <pcl/console/print.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,7 +24,123 @@ observationCounts (const ObjectModel& model)
   return counts;
 }
 
+/** True if the model is usable by the pruning step `step`; else false, with a PCL_ERROR. */
+bool
+usableModel (const char* step, const ObjectModel& model, std::size_t keypoints)
+{
+  std::string problem = observationProblem (model, keypoints);
+  if (problem.empty())
+    problem = descriptorProblem (model);
+  if (!problem.empty())
+    PCL_ERROR ("[mid::%s] The model is not usable: %s.\n", step, problem.c_str());
+  return problem.empty();
+}
+
+/** Remove the landmarks that had observations (`before`, observationCounts()) and have none
+  * now, and update the diameter.
+  */
+void
+removeUnobservedLandmarks (const std::vector<std::size_t>& before, ObjectModel& model)
+{
+  const std::vector<std::size_t> after = observationCounts (model);
+  std::vector<bool> remove (model.landmarks.size(), false);
+  for (std::size_t l = 0; l < remove.size(); ++l)
+    remove[l] = before[l] > 0 && after[l] == 0;
+  removeLandmarks (remove, model);
+  updateModelDiameter (model);
+}
+
+/** Fewest distinct places of an instance's keypoints for its footprint to judge another's. */
+constexpr std::size_t kMinFootprintPlaces = 3;
+
+/** An instance's keypoints as points, with their centroid and RMS radius. */
+struct KeypointFootprint
+{
+  std::vector<Eigen::Vector3f, Eigen::aligned_allocator<Eigen::Vector3f>> points;
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  float radius = 0.0f;
+  std::size_t places = 0; ///< distinct positions among `points`
+};
+
+KeypointFootprint
+footprintOf (const KeypointCloud& keypoints, const ModelInstance& instance)
+{
+  KeypointFootprint footprint;
+  for (const auto k : instance.keypoints) {
+    const Eigen::Vector3f p = keypoints[static_cast<std::size_t> (k)].getVector3fMap();
+    if (!p.allFinite())
+      continue;
+    bool seen = false;
+    for (const auto& q : footprint.points)
+      seen = seen || q == p;
+    footprint.places += seen ? 0 : 1;
+    footprint.points.push_back (p);
+    footprint.centroid += p;
+  }
+  if (footprint.points.empty())
+    return footprint;
+  footprint.centroid /= static_cast<float> (footprint.points.size());
+  float sum = 0.0f;
+  for (const auto& p : footprint.points)
+    sum += (p - footprint.centroid).squaredNorm();
+  footprint.radius = std::sqrt (sum / static_cast<float> (footprint.points.size()));
+  return footprint;
+}
+
+/** Distance from `p` to the nearest of `points` at another place than p. */
+float
+nearestOtherPlace (const KeypointFootprint& footprint, const Eigen::Vector3f& p)
+{
+  float nearest = std::numeric_limits<float>::infinity();
+  for (const auto& q : footprint.points)
+    if (q != p)
+      nearest = std::min (nearest, (q - p).norm());
+  return nearest;
+}
+
 } // namespace
+
+bool
+pruneObservationsOnOtherCopies (const KeypointCloud& keypoints,
+                                ObjectModel& model,
+                                std::size_t& dropped)
+{
+  dropped = 0;
+  if (!usableModel ("pruneObservationsOnOtherCopies", model, keypoints.size()))
+    return false;
+  std::vector<KeypointFootprint> footprints;
+  for (const auto& instance : model.instances)
+    footprints.push_back (footprintOf (keypoints, instance));
+  const std::vector<std::size_t> before = observationCounts (model);
+  for (std::size_t a = 0; a < model.instances.size(); ++a) {
+    ModelInstance& instance = model.instances[a];
+    ModelInstance kept = instance;
+    kept.keypoints.clear();
+    kept.landmarks.clear();
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
+      const Eigen::Vector3f p =
+          keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap();
+      const float own = nearestOtherPlace (footprints[a], p);
+      bool stray = false;
+      for (std::size_t b = 0; b < footprints.size() && !stray; ++b)
+        stray = b != a && footprints[b].places >= kMinFootprintPlaces &&
+                (p - footprints[b].centroid).norm() < footprints[b].radius &&
+                nearestOtherPlace (footprints[b], p) < own;
+      if (!stray) {
+        kept.keypoints.push_back (instance.keypoints[o]);
+        kept.landmarks.push_back (instance.landmarks[o]);
+      }
+    }
+    if (kept.keypoints.empty() || kept.keypoints.size() == instance.keypoints.size())
+      continue;
+    dropped += instance.keypoints.size() - kept.keypoints.size();
+    updateInstanceError (model, keypoints, kept);
+    instance = kept;
+  }
+  if (dropped > 0)
+    removeUnobservedLandmarks (before, model);
+  return true;
+}
 
 bool
 pruneUnexplainedObservations (const KeypointCloud& keypoints,
@@ -39,14 +158,8 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
         static_cast<double> (box_margin));
     return false;
   }
-  std::string problem = observationProblem (model, keypoints.size());
-  if (problem.empty())
-    problem = descriptorProblem (model);
-  if (!problem.empty()) {
-    PCL_ERROR ("[mid::pruneUnexplainedObservations] The model is not usable: %s.\n",
-               problem.c_str());
+  if (!usableModel ("pruneUnexplainedObservations", model, keypoints.size()))
     return false;
-  }
   const LandmarkBox box = computeLandmarkBox (model);
   const std::vector<std::size_t> before = observationCounts (model);
   for (auto& instance : model.instances) {
@@ -80,14 +193,8 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
     updateInstanceError (model, keypoints, kept);
     instance = kept;
   }
-  if (dropped == 0)
-    return true;
-  const std::vector<std::size_t> after = observationCounts (model);
-  std::vector<bool> remove (model.landmarks.size(), false);
-  for (std::size_t l = 0; l < remove.size(); ++l)
-    remove[l] = before[l] > 0 && after[l] == 0;
-  removeLandmarks (remove, model);
-  updateModelDiameter (model);
+  if (dropped > 0)
+    removeUnobservedLandmarks (before, model);
   return true;
 }
 

@@ -52,4 +52,38 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
                               ObjectModel& model,
                               std::size_t& dropped);
 
+/** \brief Drop the observations of an instance that lie among the keypoints of another
+  * instance of the same model (not in the paper).
+  *
+  * Copies cannot interpenetrate: a keypoint amid another copy's keypoints is that copy's. A
+  * model whose copies lie in one arrangement twice (two touching copies, each beside a third
+  * copy of the product) holds a landmark of the neighbour, and each instance keeps a keypoint
+  * on the neighbour's face, explained by its pose (pruneUnexplainedObservations() keeps it)
+  * but not on its copy; where that neighbour is itself an instance of the model, its own
+  * keypoints surround the stray one.
+  *
+  * An observation of instance A (keypoint k) is dropped when another instance B of the model,
+  * observing keypoints at 3 or more distinct places, has
+  * - k within B's radius of B's centroid (the RMS distance of B's keypoints from their
+  *   centroid; as instancesOverlap() tells two instances on one object), and
+  * - a keypoint nearer to k than every other place of A's keypoints (keypoints at k's own
+  *   place, the other orientations of one SIFT keypoint, are no other place).
+  * Instances are judged as they were before anything is dropped. An instance that would keep
+  * no observation keeps them all. A landmark that loses every observation is removed with its
+  * descriptors (the others are renumbered). Poses do not change.
+  *
+  * \param[in] keypoints the frame's keypoints that the observations index (camera frame,
+  * metres)
+  * \param[in,out] model its instances' observations, landmarks and descriptors are pruned,
+  * its diameter updated
+  * \param[out] dropped how many observations were dropped (0 on failure)
+  * \return false, with a PCL_ERROR and the model unchanged, for an observation whose keypoint
+  * or landmark does not exist, an instance with unequal numbers of keypoints and landmarks,
+  * or descriptors that do not match their landmark list
+  */
+bool
+pruneObservationsOnOtherCopies (const KeypointCloud& keypoints,
+                                ObjectModel& model,
+                                std::size_t& dropped);
+
 } // namespace mid
