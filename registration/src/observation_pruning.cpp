@@ -36,18 +36,43 @@ usableModel (const char* step, const ObjectModel& model, std::size_t keypoints)
   return problem.empty();
 }
 
-/** Remove the landmarks that had observations (`before`, observationCounts()) and have none
-  * now, and update the diameter.
+/** Keep the observations for which `keep (n, o)` holds (observation o of instance n) and drop
+  * the others, except in an instance that would keep none (it keeps them all). A pruned
+  * instance's error is updated; the landmarks that had observations and have none left are
+  * removed with their descriptors, and the diameter is updated. Returns how many observations
+  * were dropped.
   */
-void
-removeUnobservedLandmarks (const std::vector<std::size_t>& before, ObjectModel& model)
+template <typename Keep>
+std::size_t
+keepObservations (const KeypointCloud& keypoints, ObjectModel& model, const Keep& keep)
 {
+  const std::vector<std::size_t> before = observationCounts (model);
+  std::size_t dropped = 0;
+  for (std::size_t n = 0; n < model.instances.size(); ++n) {
+    ModelInstance& instance = model.instances[n];
+    ModelInstance kept = instance;
+    kept.keypoints.clear();
+    kept.landmarks.clear();
+    for (std::size_t o = 0; o < instance.keypoints.size(); ++o)
+      if (keep (n, o)) {
+        kept.keypoints.push_back (instance.keypoints[o]);
+        kept.landmarks.push_back (instance.landmarks[o]);
+      }
+    if (kept.keypoints.empty() || kept.keypoints.size() == instance.keypoints.size())
+      continue;
+    dropped += instance.keypoints.size() - kept.keypoints.size();
+    updateInstanceError (model, keypoints, kept);
+    instance = kept;
+  }
+  if (dropped == 0)
+    return 0;
   const std::vector<std::size_t> after = observationCounts (model);
   std::vector<bool> remove (model.landmarks.size(), false);
   for (std::size_t l = 0; l < remove.size(); ++l)
     remove[l] = before[l] > 0 && after[l] == 0;
   removeLandmarks (remove, model);
   updateModelDiameter (model);
+  return dropped;
 }
 
 /** Fewest distinct places of an instance's keypoints for its footprint to judge another's. */
@@ -87,7 +112,7 @@ footprintOf (const KeypointCloud& keypoints, const ModelInstance& instance)
   return footprint;
 }
 
-/** Distance from `p` to the nearest of `points` at another place than p. */
+/** Distance from `p` to the nearest of the footprint's points at another place than p. */
 float
 nearestOtherPlace (const KeypointFootprint& footprint, const Eigen::Vector3f& p)
 {
@@ -111,34 +136,18 @@ pruneObservationsOnOtherCopies (const KeypointCloud& keypoints,
   std::vector<KeypointFootprint> footprints;
   for (const auto& instance : model.instances)
     footprints.push_back (footprintOf (keypoints, instance));
-  const std::vector<std::size_t> before = observationCounts (model);
-  for (std::size_t a = 0; a < model.instances.size(); ++a) {
-    ModelInstance& instance = model.instances[a];
-    ModelInstance kept = instance;
-    kept.keypoints.clear();
-    kept.landmarks.clear();
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
-      const Eigen::Vector3f p =
-          keypoints[static_cast<std::size_t> (instance.keypoints[o])].getVector3fMap();
-      const float own = nearestOtherPlace (footprints[a], p);
-      bool stray = false;
-      for (std::size_t b = 0; b < footprints.size() && !stray; ++b)
-        stray = b != a && footprints[b].places >= kMinFootprintPlaces &&
-                (p - footprints[b].centroid).norm() < footprints[b].radius &&
-                nearestOtherPlace (footprints[b], p) < own;
-      if (!stray) {
-        kept.keypoints.push_back (instance.keypoints[o]);
-        kept.landmarks.push_back (instance.landmarks[o]);
-      }
-    }
-    if (kept.keypoints.empty() || kept.keypoints.size() == instance.keypoints.size())
-      continue;
-    dropped += instance.keypoints.size() - kept.keypoints.size();
-    updateInstanceError (model, keypoints, kept);
-    instance = kept;
-  }
-  if (dropped > 0)
-    removeUnobservedLandmarks (before, model);
+  dropped = keepObservations (keypoints, model, [&] (std::size_t a, std::size_t o) {
+    const Eigen::Vector3f p =
+        keypoints[static_cast<std::size_t> (model.instances[a].keypoints[o])]
+            .getVector3fMap();
+    const float own = nearestOtherPlace (footprints[a], p);
+    for (std::size_t b = 0; b < footprints.size(); ++b)
+      if (b != a && footprints[b].places >= kMinFootprintPlaces &&
+          (p - footprints[b].centroid).norm() < footprints[b].radius &&
+          nearestOtherPlace (footprints[b], p) < own)
+        return false;
+    return true;
+  });
   return true;
 }
 
@@ -162,39 +171,27 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
     return false;
   const LandmarkBox box = computeLandmarkBox (model);
   const std::vector<std::size_t> before = observationCounts (model);
-  for (auto& instance : model.instances) {
+  std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> to_model;
+  for (const auto& instance : model.instances)
+    to_model.emplace_back (instance.pose.inverse());
+  dropped = keepObservations (keypoints, model, [&] (std::size_t n, std::size_t o) {
+    const ModelInstance& instance = model.instances[n];
     if (!instance.pose.allFinite())
-      continue;
-    const Eigen::Matrix4f to_model = instance.pose.inverse();
-    ModelInstance kept = instance;
-    kept.keypoints.clear();
-    kept.landmarks.clear();
-    for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
-      const Eigen::Vector3f local =
-          to_model.topLeftCorner<3, 3>() *
-              keypoints[static_cast<std::size_t> (instance.keypoints[o])]
-                  .getVector3fMap() +
-          to_model.topRightCorner<3, 1>();
-      const Eigen::Vector3f landmark =
-          model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
-              .getVector3fMap();
-      // A landmark that only this instance observes shows its own surface (a face no other
-      // copy shows, as a copy found by its size has): the box of the others does not judge it.
-      const bool own = before[static_cast<std::size_t> (instance.landmarks[o])] == 1;
-      const bool in_box = own || !box.valid || box.distanceTo (local) <= box_margin;
-      if ((local - landmark).norm() <= max_residual && in_box) {
-        kept.keypoints.push_back (instance.keypoints[o]);
-        kept.landmarks.push_back (instance.landmarks[o]);
-      }
-    }
-    if (kept.keypoints.empty() || kept.keypoints.size() == instance.keypoints.size())
-      continue;
-    dropped += instance.keypoints.size() - kept.keypoints.size();
-    updateInstanceError (model, keypoints, kept);
-    instance = kept;
-  }
-  if (dropped > 0)
-    removeUnobservedLandmarks (before, model);
+      return true;
+    const Eigen::Vector3f local =
+        to_model[n].topLeftCorner<3, 3>() *
+            keypoints[static_cast<std::size_t> (instance.keypoints[o])]
+                .getVector3fMap() +
+        to_model[n].topRightCorner<3, 1>();
+    const Eigen::Vector3f landmark =
+        model.landmarks[static_cast<std::size_t> (instance.landmarks[o])]
+            .getVector3fMap();
+    // A landmark that only this instance observes shows its own surface (a face no other
+    // copy shows, as a copy found by its size has): the box of the others does not judge it.
+    const bool own = before[static_cast<std::size_t> (instance.landmarks[o])] == 1;
+    const bool in_box = own || !box.valid || box.distanceTo (local) <= box_margin;
+    return (local - landmark).norm() <= max_residual && in_box;
+  });
   return true;
 }
 

@@ -1,5 +1,6 @@
 // pruneUnexplainedObservations on a model with exact poses: which observations an instance's
 // pose explains is known by construction.
+#include "numbered_descriptors.h"
 #include "rigid_motion.h"
 
 #include <mid/registration/observation_pruning.h>
@@ -92,14 +93,7 @@ pruningScene ()
   scene.model.landmarks.push_back (pointAt (Eigen::Vector3f (0.0f, 0.05f, 0.0f), kOwn));
   scene.model.landmarks.push_back (
       pointAt (Eigen::Vector3f (0.0f, 0.01f, 0.0f), kUnseen));
-  for (std::size_t l = 0; l < scene.model.landmarks.size(); ++l) {
-    mid::SIFTDescriptor descriptor;
-    std::fill (
-        std::begin (descriptor.histogram), std::end (descriptor.histogram), 0.0f);
-    descriptor.histogram[0] = static_cast<float> (l);
-    scene.model.descriptors.push_back (descriptor);
-    scene.model.descriptor_landmarks.push_back (static_cast<int> (l));
-  }
+  mid::test::describeLandmarksByNumber (scene.model);
   for (int n = 0; n < 3; ++n) {
     mid::ModelInstance instance;
     instance.pose =

@@ -1,5 +1,6 @@
 // pruneObservationsOnOtherCopies on copies of a printed face lying in a row at known poses:
 // which keypoint lies on which copy is known by construction.
+#include "numbered_descriptors.h"
 #include "rigid_motion.h"
 
 #include <mid/registration/observation_pruning.h>
@@ -75,14 +76,7 @@ rowScene (float row)
   pcl::PointNormal neighbour;
   neighbour.getVector3fMap() = onNeighbour (row);
   scene.model.landmarks.push_back (neighbour);
-  for (std::size_t l = 0; l < scene.model.landmarks.size(); ++l) {
-    mid::SIFTDescriptor descriptor;
-    std::fill (
-        std::begin (descriptor.histogram), std::end (descriptor.histogram), 0.0f);
-    descriptor.histogram[0] = static_cast<float> (l);
-    scene.model.descriptors.push_back (descriptor);
-    scene.model.descriptor_landmarks.push_back (static_cast<int> (l));
-  }
+  mid::test::describeLandmarksByNumber (scene.model);
   const Eigen::Isometry3f table = rigidMotion (
       Eigen::Vector3f (-0.1f, 0.05f, 0.8f), 0.6f, Eigen::Vector3f (1.0f, 0.2f, 0.1f));
   for (int n = 0; n < 3; ++n) {
