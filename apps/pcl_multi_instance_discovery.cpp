@@ -329,8 +329,10 @@ printHelp (const char* program)
   print_info ("                      on it, sheets of paper; the paper's behaviour)\n");
   print_info (
       "  -keep_unexplained   keep the observations an instance's pose does not explain "
-      "(the\n");
-  print_info ("                      paper's behaviour)\n");
+      "and\n");
+  print_info ("                      those amid another instance's keypoints (the "
+              "paper's\n");
+  print_info ("                      behaviour)\n");
   print_info (
       "  -no_size_search     do not look for copies of a model's size that show none "
       "of its\n");
