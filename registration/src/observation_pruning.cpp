@@ -40,13 +40,15 @@ usableModel (const char* step, const ObjectModel& model, std::size_t keypoints)
   * the others, except in an instance that would keep none (it keeps them all). A pruned
   * instance's error is updated; the landmarks that had observations and have none left are
   * removed with their descriptors, and the diameter is updated. Returns how many observations
-  * were dropped.
+  * were dropped. `before` is observationCounts (model), which a caller may need too.
   */
 template <typename Keep>
 std::size_t
-keepObservations (const KeypointCloud& keypoints, ObjectModel& model, const Keep& keep)
+keepObservations (const KeypointCloud& keypoints,
+                  const std::vector<std::size_t>& before,
+                  ObjectModel& model,
+                  const Keep& keep)
 {
-  const std::vector<std::size_t> before = observationCounts (model);
   std::size_t dropped = 0;
   for (std::size_t n = 0; n < model.instances.size(); ++n) {
     ModelInstance& instance = model.instances[n];
@@ -136,7 +138,7 @@ pruneObservationsOnOtherCopies (const KeypointCloud& keypoints,
   std::vector<KeypointFootprint> footprints;
   for (const auto& instance : model.instances)
     footprints.push_back (footprintOf (keypoints, instance));
-  dropped = keepObservations (keypoints, model, [&] (std::size_t a, std::size_t o) {
+  const auto own_copy = [&] (std::size_t a, std::size_t o) {
     const Eigen::Vector3f p =
         keypoints[static_cast<std::size_t> (model.instances[a].keypoints[o])]
             .getVector3fMap();
@@ -147,7 +149,8 @@ pruneObservationsOnOtherCopies (const KeypointCloud& keypoints,
           nearestOtherPlace (footprints[b], p) < own)
         return false;
     return true;
-  });
+  };
+  dropped = keepObservations (keypoints, observationCounts (model), model, own_copy);
   return true;
 }
 
@@ -174,7 +177,7 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
   std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> to_model;
   for (const auto& instance : model.instances)
     to_model.emplace_back (instance.pose.inverse());
-  dropped = keepObservations (keypoints, model, [&] (std::size_t n, std::size_t o) {
+  const auto explained = [&] (std::size_t n, std::size_t o) {
     const ModelInstance& instance = model.instances[n];
     if (!instance.pose.allFinite())
       return true;
@@ -191,7 +194,8 @@ pruneUnexplainedObservations (const KeypointCloud& keypoints,
     const bool own = before[static_cast<std::size_t> (instance.landmarks[o])] == 1;
     const bool in_box = own || !box.valid || box.distanceTo (local) <= box_margin;
     return (local - landmark).norm() <= max_residual && in_box;
-  });
+  };
+  dropped = keepObservations (keypoints, before, model, explained);
   return true;
 }
 
