@@ -290,5 +290,11 @@ CopyCutter::hiddenCopy (const FreeObject& object, const Eigen::Vector3f& size) c
   return {copy};
 }
 
+bool
+CopyCutter::endsOfOneBox (const FreeObject& a, const FreeObject& b) const
+{
+  return endsOfOneHiddenBox (organized_, plane_, a, b, agree_);
+}
+
 } // namespace detail
 } // namespace mid

@@ -99,6 +99,12 @@ public:
   FreeObjects
   hiddenCopy (const FreeObject& object, const Eigen::Vector3f& size) const;
 
+  /** \brief True if `a` and `b` may be the two ends of one box that something in front hides
+    * in the middle (endsOfOneHiddenBox()): one object seen twice, not two copies.
+    */
+  bool
+  endsOfOneBox (const FreeObject& a, const FreeObject& b) const;
+
 private:
   /** \brief The parts of `object` under the flat tops of a box of `size` (flatTopParts()),
     * each with the object's keypoints whose pixel it holds: those with at least

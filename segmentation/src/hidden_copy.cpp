@@ -29,6 +29,16 @@ constexpr float kMinHiddenEnd = 0.5f;
 constexpr int kOccluderRing = 8;
 /** Fewest outline pixels at an end for its share to count. */
 constexpr std::size_t kMinEndPixels = 5;
+/** Cosine of the largest angle between the axes of two ends of one box (10 deg). */
+const float kMinAxisCosine = std::cos (static_cast<float> (10.0 * M_PI / 180.0));
+/** Largest distance of one end's centre from the other's axis, in the box's cross-section
+  * edge.
+  */
+constexpr float kMaxAxisOffset = 0.25f;
+/** How far two ends of one box may overlap along its axis (metres): each is measured to a few
+  * millimetres.
+  */
+constexpr float kMaxEndOverlap = 0.005f;
 
 /** The edge of `whole` of which `hidden`'s edge `i` shows a part: their other two edges agree
   * (either way round), and edge i is shorter beyond the tolerance but kMinVisibleShare of it
@@ -53,16 +63,17 @@ shortenedEdge (const Eigen::Vector3f& whole,
   return -1;
 }
 
-/** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
-  * of the outline's pixels at least (the larger share if both), 0 if neither. `hidden` is
-  * sorted (occludedOutline() lists in the frame's order).
+/** The share of the outline's pixels that something in front hides at each end of `box`
+  * along its axis `i` (the end at -1, then the one at +1; 0 at an end with fewer than
+  * kMinEndPixels outline pixels). `hidden` is sorted (occludedOutline() lists in the frame's
+  * order).
   */
-int
-hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
-           const InstanceExtent& box,
-           int i,
-           const pcl::Indices& outline,
-           const pcl::Indices& hidden)
+std::array<float, 2>
+hiddenEndShares (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                 const InstanceExtent& box,
+                 int i,
+                 const pcl::Indices& outline,
+                 const pcl::Indices& hidden)
 {
   const Eigen::Vector3f axis = box.pose.col (i).head<3>();
   const Eigen::Vector3f centre = box.pose.col (3).head<3>();
@@ -83,6 +94,22 @@ hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
     if (at_end[end] >= kMinEndPixels)
       share[end] =
           static_cast<float> (hidden_at_end[end]) / static_cast<float> (at_end[end]);
+  return share;
+}
+
+/** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
+  * of the outline's pixels at least (the larger share if both), 0 if neither
+  * (hiddenEndShares()).
+  */
+int
+hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
+           const InstanceExtent& box,
+           int i,
+           const pcl::Indices& outline,
+           const pcl::Indices& hidden)
+{
+  const std::array<float, 2> share =
+      hiddenEndShares (organized, box, i, outline, hidden);
   if (std::max (share[0], share[1]) < kMinHiddenEnd)
     return 0;
   return share[1] >= share[0] ? 1 : -1;
@@ -150,6 +177,58 @@ completeHiddenCopy (const pcl::PointCloud<pcl::PointXYZ>& organized,
     }
   }
   return false;
+}
+
+bool
+endsOfOneHiddenBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                    const Eigen::Vector4f& plane,
+                    const FreeObject& a,
+                    const FreeObject& b,
+                    const SizeAgreement& agree)
+{
+  const InstanceExtent &box_a = a.extent, &box_b = b.extent;
+  if (!(box_a.size.array() > 0.0f).all() || !(box_b.size.array() > 0.0f).all())
+    return false;
+  const int up_a = upAxis (box_a, plane), up_b = upAxis (box_b, plane);
+  if (!agree.edgesAgree (box_a.size[up_a], box_b.size[up_b]))
+    return false;
+  const Eigen::Vector3f normal = plane.head<3>().normalized();
+  Eigen::Vector3f between = box_b.pose.col (3).head<3>() - box_a.pose.col (3).head<3>();
+  between -= normal.dot (between) * normal;
+  const auto axis = [] (const InstanceExtent& box, int i) {
+    return Eigen::Vector3f (box.pose.col (i).head<3>());
+  };
+  // Each box's footprint axis that points most at the other.
+  const auto along = [&] (const InstanceExtent& box, int up) {
+    int best = -1;
+    for (int i = 0; i < 3; ++i)
+      if (i != up && (best < 0 || std::abs (axis (box, i).dot (between)) >
+                                      std::abs (axis (box, best).dot (between))))
+        best = i;
+    return best;
+  };
+  const int i = along (box_a, up_a), j = along (box_b, up_b);
+  const int across_a = 3 - i - up_a, across_b = 3 - j - up_b;
+  const float distance = axis (box_a, i).dot (between);
+  const float gap = std::abs (distance) - 0.5f * (box_a.size[i] + box_b.size[j]);
+  if (std::abs (axis (box_a, i).dot (axis (box_b, j))) < kMinAxisCosine ||
+      !agree.edgesAgree (box_a.size[across_a], box_b.size[across_b]) ||
+      (between - distance * axis (box_a, i)).norm() >
+          kMaxAxisOffset * box_a.size[across_a] ||
+      gap < -kMaxEndOverlap)
+    return false;
+  // Something in front hides the end of each that faces the other.
+  const auto hiddenTowards = [&] (const FreeObject& object, int k, float direction) {
+    pcl::Indices outline, hidden;
+    if (!occludedOutline (
+            organized, object.pixels, kOccluderRing, kOccluderStep, outline, hidden))
+      return false;
+    const std::array<float, 2> share =
+        hiddenEndShares (organized, object.extent, k, outline, hidden);
+    return share[direction > 0.0f ? 1 : 0] >= kMinHiddenEnd;
+  };
+  return hiddenTowards (a, i, distance) &&
+         hiddenTowards (b, j, -axis (box_b, j).dot (between));
 }
 
 } // namespace detail

@@ -44,5 +44,28 @@ completeHiddenCopy (const pcl::PointCloud<pcl::PointXYZ>& organized,
                     const SizeAgreement& agree,
                     InstanceExtent& completed);
 
+/** \brief True if `a` and `b` may be the two ends of one box that something in front hides
+  * in the middle (SizeInstanceSearch; not in the paper): a box lying behind a narrower
+  * object shows on both sides of it, and its two visible parts, of one cross-section, measure
+  * alike and look alike, as two copies would. They are such ends when:
+  * - their heights (the edges that stand up) and their other cross-section edges agree, and
+  *   the footprint axes along which they lie are parallel (10 deg);
+  * - b's centre lies on a's axis (less than a quarter of the cross-section edge off it), and
+  *   their boxes do not overlap;
+  * - something in front hides the end of each that faces the other (half of its outline's
+  *   pixels at least, as completeHiddenCopy() tells a hidden end).
+  *
+  * \param[in] organized the frame (camera frame, metres)
+  * \param[in] plane the support plane
+  * \param[in] a, b the objects (their pixels and boxes)
+  * \param[in] agree when two edges are one
+  */
+bool
+endsOfOneHiddenBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                    const Eigen::Vector4f& plane,
+                    const FreeObject& a,
+                    const FreeObject& b,
+                    const SizeAgreement& agree);
+
 } // namespace detail
 } // namespace mid

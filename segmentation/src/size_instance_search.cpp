@@ -280,6 +280,19 @@ discoverModelsOfCopies (const FreeObjects& objects,
       sources.push_back (o);
       copies.insert (copies.end(), parts.begin(), parts.end());
     }
+    // A box that something in front hides in the middle shows twice: once is a copy.
+    for (std::size_t c = 1; c < copies.size();) {
+      const bool seen_before =
+          std::any_of (copies.begin(),
+                       copies.begin() + static_cast<std::ptrdiff_t> (c),
+                       [&] (const FreeObject& copy) {
+                         return cutter.endsOfOneBox (copy, copies[c]);
+                       });
+      if (seen_before)
+        copies.erase (copies.begin() + static_cast<std::ptrdiff_t> (c));
+      else
+        ++c;
+    }
     if (copies.size() < 2)
       continue;
     for (const std::size_t o : sources)
@@ -324,7 +337,8 @@ pairHiddenCopies (const FreeObjects& objects,
           cutter.hiddenCopy (objects[part], objects[whole].extent.size);
       if (hidden.empty() ||
           detail::colourOverlap (surface, objects[whole], objects[part]) <
-              detail::kMinLoosePairColourOverlap)
+              detail::kMinLoosePairColourOverlap ||
+          cutter.endsOfOneBox (objects[whole], objects[part]))
         continue;
       used[whole] = used[part] = true;
       placement.addModelOfCopies ({objects[whole], hidden.front()});

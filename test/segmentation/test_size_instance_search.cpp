@@ -733,3 +733,47 @@ TEST (SizeInstanceSearch, PairsACopyHiddenAtEitherEndBesideATallBox)
     expectOneModelOfBoxes (scene, discoveringSearchInColour (scene), {0, 1});
   }
 }
+
+namespace {
+
+/** `boxes`, lying along x, and after them a post of another print, 0.06 wide and 0.25 m tall,
+  * 10 mm before the middle of a box lying at y = 0.03 (if `hiding`; else 0.35 m aside): seen
+  * at 55 deg, the post hides such a box's middle.
+  */
+std::vector<mid::test::BoxSpec>
+withAPost (std::vector<mid::test::BoxSpec> boxes, bool hiding)
+{
+  boxes.push_back (
+      restingBox (kSoyPrint, hiding ? 0.1 : -0.25, -0.05, 0.0, {0.06, 0.05, 0.25}));
+  return boxes;
+}
+
+} // namespace
+
+TEST (SizeInstanceSearch, MakesNoModelOfTheTwoEndsOfOneBoxHiddenInTheMiddle)
+{
+  // A box 0.3 m long shows two ends of one print and one size on either side of the post, as
+  // two copies lying in a row would: it is one box seen twice.
+  const Boxes scene (
+      withAPost ({restingBox (kApplePrint, 0.1, 0.03, 0.0, {0.3, 0.09, 0.04})}, true),
+      mid::test::kTableDepth,
+      kViewTilt);
+  std::size_t found = 0;
+  EXPECT_TRUE (discoverBySize (discoveringSearchInColour (scene), found).empty());
+  EXPECT_EQ (found, 0u);
+
+  // Two copies in the places of its ends are copies: in plain view (the post aside), and
+  // behind the post off one line (the second 4 cm farther back).
+  const Boxes row (withAPost ({restingBox (kApplePrint, 0.01, 0.03, 0.0),
+                               restingBox (kApplePrint, 0.19, 0.03, 0.0)},
+                              false),
+                   mid::test::kTableDepth,
+                   kViewTilt);
+  expectOneModelOfBoxes (row, discoveringSearchInColour (row), {0, 1});
+  const Boxes apart (withAPost ({restingBox (kApplePrint, 0.01, 0.03, 0.0),
+                                 restingBox (kApplePrint, 0.19, 0.07, 0.0)},
+                                true),
+                     mid::test::kTableDepth,
+                     kViewTilt);
+  expectOneModelOfBoxes (apart, discoveringSearchInColour (apart), {0, 1});
+}
