@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace mid {
 namespace detail {
@@ -31,14 +32,19 @@ constexpr int kOccluderRing = 8;
 constexpr std::size_t kMinEndPixels = 5;
 /** Cosine of the largest angle between the axes of two ends of one box (10 deg). */
 const float kMinAxisCosine = std::cos (static_cast<float> (10.0 * M_PI / 180.0));
-/** Largest distance of one end's centre from the other's axis, in the box's cross-section
-  * edge.
+/** Largest distance of one end's centre from the other's axis, as a share of the shorter of
+  * their cross-section edges.
   */
 constexpr float kMaxAxisOffset = 0.25f;
-/** How far two ends of one box may overlap along its axis (metres): each is measured to a few
-  * millimetres.
+/** Shortest gap between two ends of one box that something in front hides in the middle
+  * (metres): room for what hides it. Copies touching in a row have none.
   */
-constexpr float kMaxEndOverlap = 0.005f;
+constexpr float kMinMiddleGap = 0.02f;
+/** Smallest share of the image line between two ends of one box whose points lie in front of
+  * the box: what hides its middle. The surface of each end stops a few pixels short of the
+  * occluder (see kOccluderRing), and those pixels are the box's own.
+  */
+constexpr float kMinHiddenMiddle = 0.5f;
 
 /** The edge of `whole` of which `hidden`'s edge `i` shows a part: their other two edges agree
   * (either way round), and edge i is shorter beyond the tolerance but kMinVisibleShare of it
@@ -63,17 +69,16 @@ shortenedEdge (const Eigen::Vector3f& whole,
   return -1;
 }
 
-/** The share of the outline's pixels that something in front hides at each end of `box`
-  * along its axis `i` (the end at -1, then the one at +1; 0 at an end with fewer than
-  * kMinEndPixels outline pixels). `hidden` is sorted (occludedOutline() lists in the frame's
-  * order).
+/** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
+  * of the outline's pixels at least (the larger share if both), 0 if neither. `hidden` is
+  * sorted (occludedOutline() lists in the frame's order).
   */
-std::array<float, 2>
-hiddenEndShares (const pcl::PointCloud<pcl::PointXYZ>& organized,
-                 const InstanceExtent& box,
-                 int i,
-                 const pcl::Indices& outline,
-                 const pcl::Indices& hidden)
+int
+hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
+           const InstanceExtent& box,
+           int i,
+           const pcl::Indices& outline,
+           const pcl::Indices& hidden)
 {
   const Eigen::Vector3f axis = box.pose.col (i).head<3>();
   const Eigen::Vector3f centre = box.pose.col (3).head<3>();
@@ -94,25 +99,67 @@ hiddenEndShares (const pcl::PointCloud<pcl::PointXYZ>& organized,
     if (at_end[end] >= kMinEndPixels)
       share[end] =
           static_cast<float> (hidden_at_end[end]) / static_cast<float> (at_end[end]);
-  return share;
-}
-
-/** The end of `box` along its axis `i` (+1 or -1) where something in front hides kMinHiddenEnd
-  * of the outline's pixels at least (the larger share if both), 0 if neither
-  * (hiddenEndShares()).
-  */
-int
-hiddenEnd (const pcl::PointCloud<pcl::PointXYZ>& organized,
-           const InstanceExtent& box,
-           int i,
-           const pcl::Indices& outline,
-           const pcl::Indices& hidden)
-{
-  const std::array<float, 2> share =
-      hiddenEndShares (organized, box, i, outline, hidden);
   if (std::max (share[0], share[1]) < kMinHiddenEnd)
     return 0;
   return share[1] >= share[0] ? 1 : -1;
+}
+
+/** The pixel of `pixels` whose point lies farthest along `direction` (camera frame): the tip
+  * of the end that faces that way; -1 if none has a point.
+  */
+pcl::index_t
+tipPixel (const pcl::PointCloud<pcl::PointXYZ>& organized,
+          const pcl::Indices& pixels,
+          const Eigen::Vector3f& direction)
+{
+  pcl::index_t tip = -1;
+  float farthest = -std::numeric_limits<float>::infinity();
+  for (const auto p : pixels) {
+    const Eigen::Vector3f point =
+        organized[static_cast<std::size_t> (p)].getVector3fMap();
+    if (point.allFinite() && direction.dot (point) > farthest) {
+      farthest = direction.dot (point);
+      tip = p;
+    }
+  }
+  return tip;
+}
+
+/** The share of the pixels on the image line between pixels p and q (both left out), of those
+  * with a point, whose point lies nearer the camera by kOccluderStep at least than the straight
+  * line between p's and q's points (its depth taken linearly along the image line) and outside
+  * `box` grown by kOccluderStep (the box the two ends would make whole: a copy lying between
+  * them in line is on it, not in front of it); 0 if none has a point.
+  */
+float
+hiddenShareBetween (const pcl::PointCloud<pcl::PointXYZ>& organized,
+                    pcl::index_t p,
+                    pcl::index_t q,
+                    const OrientedBox& box)
+{
+  const auto width = static_cast<int> (organized.width);
+  const int u0 = p % width, v0 = p / width, u1 = q % width, v1 = q / width;
+  const int steps = std::max (std::abs (u1 - u0), std::abs (v1 - v0));
+  const float z0 = organized[static_cast<std::size_t> (p)].z;
+  const float z1 = organized[static_cast<std::size_t> (q)].z;
+  std::size_t seen = 0, hidden = 0;
+  for (int step = 1; step < steps; ++step) {
+    const float t = static_cast<float> (step) / static_cast<float> (steps);
+    const auto u = static_cast<int> (
+        std::lround (static_cast<float> (u0) + t * static_cast<float> (u1 - u0)));
+    const auto v = static_cast<int> (
+        std::lround (static_cast<float> (v0) + t * static_cast<float> (v1 - v0)));
+    const pcl::PointXYZ& point =
+        organized[static_cast<std::size_t> (v) * organized.width +
+                  static_cast<std::size_t> (u)];
+    if (!std::isfinite (point.z))
+      continue;
+    ++seen;
+    if (point.z < (1.0f - t) * z0 + t * z1 - kOccluderStep &&
+        !box.holds (point.getVector3fMap(), kOccluderStep))
+      ++hidden;
+  }
+  return seen == 0 ? 0.0f : static_cast<float> (hidden) / static_cast<float> (seen);
 }
 
 /** `box` with its edge `i` lengthened to `length` beyond its end `end` (+1 or -1), its edges
@@ -214,21 +261,27 @@ endsOfOneHiddenBox (const pcl::PointCloud<pcl::PointXYZ>& organized,
   if (std::abs (axis (box_a, i).dot (axis (box_b, j))) < kMinAxisCosine ||
       !agree.edgesAgree (box_a.size[across_a], box_b.size[across_b]) ||
       (between - distance * axis (box_a, i)).norm() >
-          kMaxAxisOffset * box_a.size[across_a] ||
-      gap < -kMaxEndOverlap)
+          kMaxAxisOffset * std::min (box_a.size[across_a], box_b.size[across_b]) ||
+      gap < kMinMiddleGap)
     return false;
-  // Something in front hides the end of each that faces the other.
-  const auto hiddenTowards = [&] (const FreeObject& object, int k, float direction) {
-    pcl::Indices outline, hidden;
-    if (!occludedOutline (
-            organized, object.pixels, kOccluderRing, kOccluderStep, outline, hidden))
-      return false;
-    const std::array<float, 2> share =
-        hiddenEndShares (organized, object.extent, k, outline, hidden);
-    return share[direction > 0.0f ? 1 : 0] >= kMinHiddenEnd;
-  };
-  return hiddenTowards (a, i, distance) &&
-         hiddenTowards (b, j, -axis (box_b, j).dot (between));
+  // Something in front of the box they would make whole hides the middle: the image line
+  // between the tips of the two ends.
+  const float side = distance > 0.0f ? 1.0f : -1.0f;
+  const float from = -0.5f * side * box_a.size[i];
+  const float to = distance + 0.5f * side * box_b.size[j];
+  Eigen::Vector3f half;
+  half[i] = 0.5f * std::abs (to - from);
+  half[across_a] = 0.5f * std::max (box_a.size[across_a], box_b.size[across_b]);
+  half[up_a] = 0.5f * std::max (box_a.size[up_a], box_b.size[up_b]);
+  Eigen::Matrix4f whole = box_a.pose;
+  whole.col (3).head<3>() += 0.5f * (from + to) * axis (box_a, i);
+  OrientedBox hull;
+  hull.to_box = whole.inverse();
+  hull.half = half.array();
+  const pcl::index_t tip_a = tipPixel (organized, a.pixels, side * axis (box_a, i));
+  const pcl::index_t tip_b = tipPixel (organized, b.pixels, -side * axis (box_a, i));
+  return tip_a >= 0 && tip_b >= 0 &&
+         hiddenShareBetween (organized, tip_a, tip_b, hull) >= kMinHiddenMiddle;
 }
 
 } // namespace detail

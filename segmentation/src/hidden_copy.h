@@ -50,10 +50,15 @@ completeHiddenCopy (const pcl::PointCloud<pcl::PointXYZ>& organized,
   * alike and look alike, as two copies would. They are such ends when:
   * - their heights (the edges that stand up) and their other cross-section edges agree, and
   *   the footprint axes along which they lie are parallel (10 deg);
-  * - b's centre lies on a's axis (less than a quarter of the cross-section edge off it), and
-  *   their boxes do not overlap;
-  * - something in front hides the end of each that faces the other (half of its outline's
-  *   pixels at least, as completeHiddenCopy() tells a hidden end).
+  * - b's centre lies on a's axis (less than a quarter of the shorter cross-section edge off
+  *   it), and their boxes lie 2 cm apart at least (room for what hides the middle);
+  * - something in front hides the middle: half of the pixels at least on the image line
+  *   between the tips of the ends that face each other hold a point nearer the camera than
+  *   the line between the tips (by 10 mm, kOccluderStep) and outside the box the two would
+  *   make whole (grown by 10 mm): a copy standing between them in a row lies on that box, not
+  *   in front of it.
+  * Two copies lying in a row with one object in front of the space between them are taken
+  * for one box too.
   *
   * \param[in] organized the frame (camera frame, metres)
   * \param[in] plane the support plane

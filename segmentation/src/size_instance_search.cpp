@@ -230,7 +230,9 @@ joinModelOrCutIntoCopies (const FreeObject& object,
   * copies of that size cut from the other `candidates` (flush copies, one joined with
   * something else by its flat top, or one hidden in part by something in front); then models
   * of the copies that a candidate left holds, joined with each other (by their flat tops) or
-  * flush (by its outline). `used` marks the objects whose copies were placed.
+  * flush (by its outline). No two copies of a model may be the two ends of one box hidden in
+  * the middle (CopyCutter::endsOfOneBox()): the second is left out. `used` marks the objects
+  * whose copies were placed, and those of a model left out as such an end.
   */
 void
 discoverModelsOfCopies (const FreeObjects& objects,
@@ -261,7 +263,10 @@ discoverModelsOfCopies (const FreeObjects& objects,
     const bool seen_once = copies.size() < 2;
     const Eigen::Vector3f size = copies.front().extent.size;
     for (const std::size_t o : candidates) {
-      if (used[o] || std::find (group.begin(), group.end(), o) != group.end())
+      if (used[o] || std::find (group.begin(), group.end(), o) != group.end() ||
+          std::any_of (group.begin(), group.end(), [&] (std::size_t g) {
+            return cutter.endsOfOneBox (objects[g], objects[o]);
+          }))
         continue;
       FreeObjects parts;
       if (!seen_once)
@@ -280,7 +285,9 @@ discoverModelsOfCopies (const FreeObjects& objects,
       sources.push_back (o);
       copies.insert (copies.end(), parts.begin(), parts.end());
     }
-    // A box that something in front hides in the middle shows twice: once is a copy.
+    // A box that something in front hides in the middle shows twice: once is a copy (a
+    // candidate's part is tested as the candidate measured, above: a completed hidden copy's
+    // box reaches into the middle).
     for (std::size_t c = 1; c < copies.size();) {
       const bool seen_before =
           std::any_of (copies.begin(),
@@ -317,7 +324,8 @@ discoverModelsOfCopies (const FreeObjects& objects,
 /** Two of the `founders` (the objects that may found a model: no shorter edge than the
   * models', standing alone when asked) not yet `used`, one a copy of the other's box that
   * something in front hides in part (CopyCutter::hiddenCopy()), that look alike
-  * (colourOverlap() of kMinLoosePairColourOverlap at least), make a model: the hidden copy
+  * (colourOverlap() of kMinLoosePairColourOverlap at least), and that are not the two ends of
+  * one box hidden in the middle (CopyCutter::endsOfOneBox()), make a model: the hidden copy
   * with its box completed. Each object takes the first such partner, in the order of
   * `founders`.
   */

@@ -776,4 +776,22 @@ TEST (SizeInstanceSearch, MakesNoModelOfTheTwoEndsOfOneBoxHiddenInTheMiddle)
                      mid::test::kTableDepth,
                      kViewTilt);
   expectOneModelOfBoxes (apart, discoveringSearchInColour (apart), {0, 1});
+
+  // Two copies in one line, each with a post (of two heights) before its inner end, which
+  // shows about 100 of its 120 mm: their facing ends are hidden, but the table between the
+  // posts shows.
+  const Boxes posts ({restingBox (kApplePrint, -0.14, 0.03, 0.0),
+                      restingBox (kApplePrint, 0.34, 0.03, 0.0),
+                      restingBox (kSoyPrint, -0.06, -0.05, 0.0, {0.06, 0.05, 0.25}),
+                      restingBox (kSoyPrint, 0.26, -0.05, 0.0, {0.06, 0.05, 0.22})},
+                     mid::test::kTableDepth,
+                     kViewTilt);
+  const mid::ObjectModels models =
+      discoverBySize (discoveringSearchInColour (posts), found);
+  ASSERT_EQ (models.size(), 1u);
+  ASSERT_EQ (models[0].instances.size(), 2u);
+  std::set<int> boxes;
+  for (const auto& instance : models[0].instances)
+    boxes.insert (mostlyOnBox (posts, instance.keypoints));
+  EXPECT_EQ (boxes, (std::set<int>{0, 1}));
 }

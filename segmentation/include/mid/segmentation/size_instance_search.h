@@ -85,8 +85,9 @@ namespace mid {
   *    occludedOutline()), whose colours overlap by half (with the frame's chromaticities),
   *    make a model in the frame of the whole one, the hidden copy's box lengthened beyond
   *    the hidden end. Two objects of a new model that may be the two ends of one box that
-  *    something in front hides in the middle (of one cross-section, on one axis, each hidden
-  *    at the end that faces the other) are one object seen twice: the second is no copy.
+  *    something in front hides in the middle (of one cross-section, on one axis, with
+  *    something nearer the camera between them) are one object seen twice: the second is no
+  *    copy.
   *
   * An object touching another is measured with it and agrees with no model's size, unless
   * the other is a found copy of a measured model, both are copies of one touching flush, or
