@@ -777,9 +777,9 @@ TEST (SizeInstanceSearch, MakesNoModelOfTheTwoEndsOfOneBoxHiddenInTheMiddle)
                      kViewTilt);
   expectOneModelOfBoxes (apart, discoveringSearchInColour (apart), {0, 1});
 
-  // Two copies in one line, each with a post (of two heights) before its inner end, which
-  // shows about 100 of its 120 mm: their facing ends are hidden, but the table between the
-  // posts shows.
+  // Two copies in one line, their centres 0.48 m apart, each with a post (of two heights)
+  // before its inner end, which hides part of it: the table shows between the posts, and the
+  // two make a model.
   const Boxes posts ({restingBox (kApplePrint, -0.14, 0.03, 0.0),
                       restingBox (kApplePrint, 0.34, 0.03, 0.0),
                       restingBox (kSoyPrint, -0.06, -0.05, 0.0, {0.06, 0.05, 0.25}),
