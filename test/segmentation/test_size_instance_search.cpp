@@ -794,4 +794,14 @@ TEST (SizeInstanceSearch, MakesNoModelOfTheTwoEndsOfOneBoxHiddenInTheMiddle)
   for (const auto& instance : models[0].instances)
     boxes.insert (mostlyOnBox (posts, instance.keypoints));
   EXPECT_EQ (boxes, (std::set<int>{0, 1}));
+
+  // Three tall copies standing in a row, 17 mm apart: the middle one stands between the outer
+  // two, on the box they would make whole, not in front of it.
+  const Eigen::Vector3d standing (0.083, 0.085, 0.241);
+  const Boxes three ({restingBox (kApplePrint, -0.1, 0.03, 0.0, standing),
+                      restingBox (kApplePrint, 0.0, 0.03, 0.0, standing),
+                      restingBox (kApplePrint, 0.1, 0.03, 0.0, standing)},
+                     mid::test::kTableDepth,
+                     kViewTilt);
+  expectOneModelOfBoxes (three, discoveringSearchInColour (three), {0, 1, 2});
 }
