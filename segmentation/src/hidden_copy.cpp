@@ -1,5 +1,7 @@
 #include "hidden_copy.h"
 
+#include "image_line.h"
+
 #include <mid/segmentation/occluded_outline.h>
 
 #include <Eigen/Geometry>
@@ -127,7 +129,7 @@ tipPixel (const pcl::PointCloud<pcl::PointXYZ>& organized,
 
 /** The share of the pixels on the image line between pixels p and q (both left out), of those
   * with a point, whose point lies nearer the camera by kOccluderStep at least than the straight
-  * line between p's and q's points (its depth taken linearly along the image line) and outside
+  * segment between p's and q's points (along its viewing ray, walkImageLine()) and outside
   * `box` grown by kOccluderStep (the box the two ends would make whole: a copy lying between
   * them in line is on it, not in front of it); 0 if none has a point.
   */
@@ -137,28 +139,15 @@ hiddenShareBetween (const pcl::PointCloud<pcl::PointXYZ>& organized,
                     pcl::index_t q,
                     const OrientedBox& box)
 {
-  const auto width = static_cast<int> (organized.width);
-  const int u0 = p % width, v0 = p / width, u1 = q % width, v1 = q / width;
-  const int steps = std::max (std::abs (u1 - u0), std::abs (v1 - v0));
-  const float z0 = organized[static_cast<std::size_t> (p)].z;
-  const float z1 = organized[static_cast<std::size_t> (q)].z;
   std::size_t seen = 0, hidden = 0;
-  for (int step = 1; step < steps; ++step) {
-    const float t = static_cast<float> (step) / static_cast<float> (steps);
-    const auto u = static_cast<int> (
-        std::lround (static_cast<float> (u0) + t * static_cast<float> (u1 - u0)));
-    const auto v = static_cast<int> (
-        std::lround (static_cast<float> (v0) + t * static_cast<float> (v1 - v0)));
-    const pcl::PointXYZ& point =
-        organized[static_cast<std::size_t> (v) * organized.width +
-                  static_cast<std::size_t> (u)];
-    if (!std::isfinite (point.z))
-      continue;
+  walkImageLine (organized, p, q, [&] (pcl::index_t pixel, double behind) {
     ++seen;
-    if (point.z < (1.0f - t) * z0 + t * z1 - kOccluderStep &&
-        !box.holds (point.getVector3fMap(), kOccluderStep))
+    if (behind < -static_cast<double> (kOccluderStep) &&
+        !box.holds (organized[static_cast<std::size_t> (pixel)].getVector3fMap(),
+                    kOccluderStep))
       ++hidden;
-  }
+    return true;
+  });
   return seen == 0 ? 0.0f : static_cast<float> (hidden) / static_cast<float> (seen);
 }
 
