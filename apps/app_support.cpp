@@ -143,9 +143,19 @@ printResult (const pcl::PointCloud<PointT>& cloud,
   for (std::size_t m = 0; m < result.models.size(); ++m) {
     print_info ("  object %zu: ", m);
     print_value ("%zu", result.models[m].instances.size());
-    print_info (" instances, %zu landmarks, diameter %.3f m\n",
+    print_info (" instances, %zu landmarks, diameter %.3f m",
                 result.models[m].landmarks.size(),
                 static_cast<double> (result.models[m].diameter));
+    if (m < result.model_sizes.size() && result.model_sizes[m].valid) {
+      const ModelSize& box = result.model_sizes[m];
+      print_info (", box %.1f x %.1f x %.1f mm (agreed by %d cop%s)",
+                  1000.0 * static_cast<double> (box.size.x()),
+                  1000.0 * static_cast<double> (box.size.y()),
+                  1000.0 * static_cast<double> (box.size.z()),
+                  box.agreeing,
+                  box.agreeing == 1 ? "y" : "ies");
+    }
+    print_info ("\n");
   }
   print_info ("timing_ms: load ");
   print_value ("%.1f", load_ms);

@@ -6,6 +6,7 @@
 #include <mid/evaluation/benchmark_report.h>
 #include <mid/evaluation/detection_result.h>
 #include <mid/evaluation/ground_truth.h>
+#include <mid/evaluation/object_size.h>
 #include <mid/evaluation/object_symmetry.h>
 #include <mid/evaluation/shared_surface.h>
 #include <mid/io/staged_files.h>
@@ -61,6 +62,8 @@ printHelp (const char* program)
       "                a scene folder name to its scenario name, an optional\n");
   print_info ("                models_info.json (BOP) the symmetries of each object's "
               "shape\n");
+  print_info ("                and its size (then a table compares the results' "
+              "boxes with it)\n");
   print_info ("  RESULTS_DIR   <scene>/<image>.json: results of "
               "pcl_multi_instance_discovery -json\n");
   print_info ("                (a missing result counts as an empty one and is "
@@ -363,13 +366,16 @@ main (int argc, char** argv)
     surface.min_contrast = 0.0f;
   }
   mid::evaluation::ObjectSymmetryTable symmetries;
+  mid::evaluation::ObjectSizeTable sizes;
   if (!fs::exists (dataset / "models_info.json"))
     print_info (
         "'%s' has no models_info.json: pose errors modulo the shapes' symmetries "
-        "are the plain ones.\n",
+        "are the plain ones, and the objects' boxes are not compared.\n",
         argv[1]);
   else if (!mid::evaluation::loadBopModelSymmetries (
-               (dataset / "models_info.json").string(), symmetries))
+               (dataset / "models_info.json").string(), symmetries) ||
+           !mid::evaluation::loadBopModelSizes ((dataset / "models_info.json").string(),
+                                                sizes))
     return 1;
   std::vector<mid::evaluation::MethodScores> methods;
   for (std::size_t m = 0; m < results.size(); ++m) {
@@ -396,6 +402,12 @@ main (int argc, char** argv)
         "whose rotation is wrong by more than 10 and 45 deg, then the same modulo "
         "the symmetries of the object's shape, from models_info.json):\n\n" +
         mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
+    if (!sizes.empty())
+      report +=
+          "\nThe box each correct object's copies occupy on the table (the result's "
+          "\"box\"; edges against the product's size from models_info.json, largest "
+          "edge error):\n\n" +
+          mid::evaluation::formatBoxSizeReport (method.scenarios, sizes);
     if (surface.cell > 0.0f)
       report +=
           "\nRecall against the " +

@@ -218,15 +218,18 @@ discoverFromKeypoints (const DiscoveryParameters& p,
       detail::resolveBoxTurns (p, frame, plane, result) &&
       detail::removeSupportPrints (p, frame, plane, result) &&
       detail::pruneObservations (p, result)) {
-    // Merges add landmarks in the frame of the model they join: every model is centred again.
+    // Merges add landmarks in the frame of the model they join: every model is centred again,
+    // before its box is measured in that frame.
     for (auto& model : result.models)
       centerModelFrame (model);
-    return true;
+    if (detail::measureObjectBoxes (p, frame, plane, result))
+      return true;
   }
   // No partial output: the stages' results go, the given keypoints and descriptors stay.
   result.matches.clear();
   result.triplets = result.clusters = result.rejected_clusters = 0;
   result.models.clear();
+  result.model_sizes.clear();
   result.timing_ms.resize (timed);
   return false;
 }

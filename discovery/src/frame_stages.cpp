@@ -10,6 +10,7 @@
 #include <mid/segmentation/interpenetration_filter.h>
 #include <mid/segmentation/model_box_extension.h>
 #include <mid/segmentation/model_box_pruning.h>
+#include <mid/segmentation/model_size.h>
 #include <mid/segmentation/model_size_merger.h>
 #include <mid/segmentation/model_size_splitter.h>
 #include <mid/segmentation/photometric_verification.h>
@@ -421,6 +422,24 @@ pruneObservations (const DiscoveryParameters& p, DiscoveryResult& result)
         return false;
     }
   result.timing_ms.emplace_back ("observations", watch.getTime());
+  return true;
+}
+
+bool
+measureObjectBoxes (const DiscoveryParameters& p,
+                    const KeypointSurface& frame,
+                    FramePlane& plane,
+                    DiscoveryResult& result)
+{
+  pcl::StopWatch watch;
+  result.model_sizes.assign (result.models.size(), ModelSize());
+  if (frame.organized && !result.models.empty()) {
+    ModelSizeMeasurement measurement;
+    setUpBoxMeasurement (p, frame, result, plane, measurement);
+    if (!measurement.measure (result.models, result.model_sizes))
+      return false;
+  }
+  result.timing_ms.emplace_back ("box_sizes", watch.getTime());
   return true;
 }
 

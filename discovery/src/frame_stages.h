@@ -151,5 +151,16 @@ removeSupportPrints (const DiscoveryParameters& p,
 bool
 pruneObservations (const DiscoveryParameters& p, DiscoveryResult& result);
 
+/** Measure the box each model's copies occupy on the table (result.model_sizes, one per
+  * model, in the models' present frames: the last step, after the frames are centred), with
+  * the size tolerances of the steps that compare sizes; all invalid without the organized
+  * frame or a support plane. Times the "box_sizes" stage.
+  */
+bool
+measureObjectBoxes (const DiscoveryParameters& p,
+                    const KeypointSurface& frame,
+                    FramePlane& plane,
+                    DiscoveryResult& result);
+
 } // namespace detail
 } // namespace mid

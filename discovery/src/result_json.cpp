@@ -37,19 +37,43 @@ quoted (const std::string& text)
   return out + "\"";
 }
 
+/** A 4x4 matrix as a row-major nested list. */
+void
+writeMatrix (std::ostringstream& out, const Eigen::Matrix4f& matrix)
+{
+  out << "[";
+  for (int r = 0; r < 4; ++r) {
+    out << (r > 0 ? ", [" : "[");
+    for (int c = 0; c < 4; ++c)
+      out << (c > 0 ? ", " : "") << number (matrix (r, c));
+    out << "]";
+  }
+  out << "]";
+}
+
+/** The box an object's copies occupy on the table, or null when none was measured. */
+void
+writeBox (std::ostringstream& out, const ModelSize* size)
+{
+  if (!size || !size->valid) {
+    out << "null";
+    return;
+  }
+  out << "{\"size\": [" << number (size->size.x()) << ", " << number (size->size.y())
+      << ", " << number (size->size.z()) << "], \"copies\": " << size->agreeing
+      << ",\n             \"pose\": ";
+  writeMatrix (out, size->box_in_model);
+  out << "}";
+}
+
 void
 writeInstance (std::ostringstream& out,
                const ModelInstance& instance,
                const ImageKeypoints& image)
 {
-  out << "        {\"pose\": [";
-  for (int r = 0; r < 4; ++r) {
-    out << (r > 0 ? ", [" : "[");
-    for (int c = 0; c < 4; ++c)
-      out << (c > 0 ? ", " : "") << number (instance.pose (r, c));
-    out << "]";
-  }
-  out << "],\n         \"keypoints\": [";
+  out << "        {\"pose\": ";
+  writeMatrix (out, instance.pose);
+  out << ",\n         \"keypoints\": [";
   float u_min = std::numeric_limits<float>::max(), v_min = u_min;
   float u_max = std::numeric_limits<float>::lowest(), v_max = u_max;
   for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
@@ -93,8 +117,11 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
     const auto& model = result.models[m];
     out << (m > 0 ? "," : "") << "\n    {\"id\": " << m
         << ", \"landmarks\": " << model.landmarks.size()
-        << ", \"diameter\": " << number (model.diameter)
-        << ",\n     \"instances\": [\n";
+        << ", \"diameter\": " << number (model.diameter) << ",\n     \"box\": ";
+    writeBox (out,
+              result.model_sizes.size() == result.models.size() ? &result.model_sizes[m]
+                                                                : nullptr);
+    out << ",\n     \"instances\": [\n";
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
       writeInstance (out, model.instances[i], result.image_keypoints);
       out << (i + 1 < model.instances.size() ? ",\n" : "\n");

@@ -131,6 +131,52 @@ sharedSurfaceRow (const std::string& name, const ScoreSummary& s, int min_shared
   return line + tail;
 }
 
+/** "| count | median | share <= 5 mm | share <= 10 mm" of box size errors (millimetres). */
+std::string
+boxErrorColumns (const std::vector<double>& errors)
+{
+  const auto within = [&errors] (double limit) {
+    const auto count = std::count_if (
+        errors.begin(), errors.end(), [limit] (double e) { return e <= limit; });
+    return errors.empty()
+               ? 0.0
+               : static_cast<double> (count) / static_cast<double> (errors.size());
+  };
+  char text[96];
+  std::snprintf (text,
+                 sizeof (text),
+                 " | %5zu | %6.1f | %5.3f | %5.3f",
+                 errors.size(),
+                 median (errors),
+                 within (5.0),
+                 within (10.0));
+  return text;
+}
+
+std::string
+boxSizeRow (const std::string& name,
+            const ScoreSummary& s,
+            const ObjectSizeTable& sizes)
+{
+  std::size_t objects = 0;
+  std::vector<double> errors, agreed_errors;
+  for (const ObjectBox& box : s.object_boxes) {
+    const auto truth = sizes.find (box.type);
+    if (truth == sizes.end())
+      continue;
+    ++objects;
+    if (box.copies < 1)
+      continue;
+    const double error = boxSizeErrorMm (box.size.cast<double>(), truth->second);
+    errors.push_back (error);
+    if (box.copies >= 2)
+      agreed_errors.push_back (error);
+  }
+  char line[64];
+  std::snprintf (line, sizeof (line), "| %-10s | %5zu", name.c_str(), objects);
+  return line + boxErrorColumns (errors) + boxErrorColumns (agreed_errors) + " |\n";
+}
+
 std::string
 poseErrorRow (const std::string& name,
               const ScoreSummary& s,
@@ -184,6 +230,7 @@ ScoreSummary::add (const FrameScore& score, const DetectionResult& result)
   append (found_shared_cells, score.found_shared_cells);
   append (missed_shared_cells, score.missed_shared_cells);
   append (translation_errors_mm, score.translation_errors_mm);
+  append (object_boxes, score.object_boxes);
   if (result.total_ms >= 0.0)
     times_ms.push_back (result.total_ms);
   if (result.features_ms >= 0.0)
@@ -211,6 +258,7 @@ ScoreSummary::add (const ScoreSummary& other)
   append (times_ms, other.times_ms);
   append (feature_times_ms, other.feature_times_ms);
   append (grouping_times_ms, other.grouping_times_ms);
+  append (object_boxes, other.object_boxes);
 }
 
 double
@@ -281,6 +329,22 @@ formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
     total.add (summary);
   }
   return report + poseErrorRow ("total", total, thresholds_deg);
+}
+
+std::string
+formatBoxSizeReport (const std::map<std::string, ScoreSummary>& scenarios,
+                     const ObjectSizeTable& sizes)
+{
+  std::string report =
+      "| scenario   | objects | with a box | edge err. mm (median) | <= 5 mm | "
+      "<= 10 mm | box of 2+ copies | edge err. mm (median) | <= 5 mm | "
+      "<= 10 mm |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  ScoreSummary total;
+  for (const auto& [name, summary] : scenarios) {
+    report += boxSizeRow (name, summary, sizes);
+    total.add (summary);
+  }
+  return report + boxSizeRow ("total", total, sizes);
 }
 
 std::string

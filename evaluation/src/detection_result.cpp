@@ -35,6 +35,13 @@ readDetectionResult (const std::string& path, DetectionResult& result)
           timing.at ("triplets").get<double>() + timing.at ("clustering").get<double>();
     for (const auto& object : document.at ("objects")) {
       DetectedObject detected;
+      if (object.contains ("box") && !object.at ("box").is_null()) {
+        const auto& box = object.at ("box");
+        for (int e = 0; e < 3; ++e)
+          detected.box_size[e] =
+              box.at ("size").at (static_cast<std::size_t> (e)).get<float>();
+        detected.box_copies = box.at ("copies").get<int>();
+      }
       for (const auto& instance : object.at ("instances")) {
         DetectedInstance d;
         const auto& pose = instance.at ("pose");

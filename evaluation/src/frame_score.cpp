@@ -111,6 +111,7 @@ scoreFrame (const GroundTruthFrame& truth,
       continue;
     }
     found_types.insert (type);
+    score.object_boxes.push_back ({type, object.box_size, object.box_copies});
     std::vector<std::pair<std::size_t, int>> true_hits;
     for (std::size_t i = 0; i < object.instances.size(); ++i) {
       const bool good =

@@ -1,6 +1,8 @@
 #include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_size.h>
 
+#include <pcl/console/print.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -192,6 +194,22 @@ ModelSizeMeasurement::measurementProblem (const ObjectModels& models) const
   if (min_agreeing_ < 1)
     return "at least one instance must agree on a size";
   return "";
+}
+
+bool
+ModelSizeMeasurement::measure (const ObjectModels& models, ModelSizes& sizes) const
+{
+  sizes.clear();
+  if (const std::string problem = measurementProblem (models); !problem.empty()) {
+    PCL_ERROR ("[mid::ModelSizeMeasurement::measure] %s.\n", problem.c_str());
+    return false;
+  }
+  Eigen::Vector4f plane;
+  if (models.empty() || !fitPlane (plane)) {
+    sizes.resize (models.size());
+    return true;
+  }
+  return measureSizes (models, plane, sizes);
 }
 
 bool

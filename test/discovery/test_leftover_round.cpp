@@ -144,7 +144,8 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
   // Without an organized frame the patches, the search from the boxes, the surface
   // refinement, the size split and merge, the removal of repeated prints, the size search, the
   // removal of interpenetrating instances, of models of disagreeing sizes and of prints on the
-  // table do not run, but are timed; the pruning of the observations runs.
+  // table and the measurement of the objects' boxes do not run, but are timed; the pruning of
+  // the observations runs.
   const std::vector<std::string> last = {"leftovers",
                                          "patches",
                                          "box_search",
@@ -158,7 +159,10 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
                                          "size_disagreement",
                                          "box_turns",
                                          "support_prints",
-                                         "observations"};
+                                         "observations",
+                                         "box_sizes"};
+  ASSERT_EQ (result.model_sizes.size(), 2u); // no frame: no box measured
+  EXPECT_FALSE (result.model_sizes[0].valid || result.model_sizes[1].valid);
   ASSERT_GE (result.timing_ms.size(), last.size());
   for (std::size_t i = 0; i < last.size(); ++i)
     EXPECT_EQ (result.timing_ms[result.timing_ms.size() - last.size() + i].first,

@@ -280,6 +280,37 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
   EXPECT_EQ (found, (std::set<std::set<int>>{{0, 2}, {1, 3}}));
 }
 
+namespace {
+
+/** The object's box (DiscoveryResult::model_sizes) has the edges `size` (within 6 mm) and,
+  * placed at each instance's pose, lies on that instance's box: its centre within 5 mm of the
+  * box's, its longest edge along the box's x (the longest of every box here).
+  */
+void
+expectBoxOnEveryCopy (const mid::test::RenderedObjectsScene& scene,
+                      const mid::DiscoveryResult& result,
+                      std::size_t m,
+                      const Eigen::Vector3f& size)
+{
+  ASSERT_EQ (result.model_sizes.size(), result.models.size());
+  const mid::ModelSize& box = result.model_sizes[m];
+  ASSERT_TRUE (box.valid);
+  EXPECT_LT ((box.size - size).cwiseAbs().maxCoeff(), 0.006f);
+  const auto& model = result.models[m];
+  const auto boxes = boxesOf (scene, result, model);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Eigen::Matrix4f placed = model.instances[i].pose * box.box_in_model;
+    const Eigen::Isometry3f truth =
+        scene.boxes[static_cast<std::size_t> (boxes[i])].pose.cast<float>();
+    EXPECT_LT ((placed.topRightCorner<3, 1>() - truth.translation()).norm(), 0.005f)
+        << i;
+    EXPECT_GT (std::abs (placed.block<3, 1> (0, 2).dot (truth.linear().col (0))), 0.99f)
+        << i;
+  }
+}
+
+} // namespace
+
 TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
 {
   // Two copies show one print, two others another, all four boxes of one size lying on a
@@ -314,11 +345,31 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
     ASSERT_EQ (result.models.size(), 1u);
     const auto boxes = boxesOf (scene, result, result.models[0]);
     EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
+    // The merged model's frame moved to its landmarks' new centroid: its box did too.
+    expectBoxOnEveryCopy (scene, result, 0, Eigen::Vector3f (0.04f, 0.09f, 0.12f));
   };
   mid::DiscoveryParameters merged = apart;
   merged.merge_by_size = true;
   expectOneObjectOfAllFour (merged);
   expectOneObjectOfAllFour (mid::DiscoveryParameters());
+}
+
+TEST (MultiInstanceDiscovery, ReportsTheBoxEachObjectsCopiesOccupyOnTheTable)
+{
+  // Three copies of one box lying apart on a table: the object's box has the box's size, all
+  // three copies agree on it, and placed at each instance's pose it is that copy's box.
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  const auto scene =
+      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.16, -0.1, z, 10.0)},
+                               {kCookies, size, boxPose (0.16, -0.12, z, -35.0)},
+                               {kCookies, size, boxPose (0.0, 0.12, z, 70.0)}},
+                              0.95);
+  const auto result = discover (scene);
+  ASSERT_EQ (result.models.size(), 1u);
+  ASSERT_EQ (boxesOf (scene, result, result.models[0]).size(), 3u);
+  EXPECT_EQ (result.model_sizes.at (0).agreeing, 3);
+  expectBoxOnEveryCopy (scene, result, 0, Eigen::Vector3f (0.04f, 0.09f, 0.12f));
 }
 
 TEST (MultiInstanceDiscovery, ReportsNoObjectOfSheetsLyingFlatOnTheTable)
@@ -698,11 +749,14 @@ TEST (MultiInstanceDiscovery, FindsTwoCopiesHeadToTailOnATable)
       mid::DiscoveryParameters(), with_frame, nullptr, frame));
   ASSERT_EQ (with_frame.models.size(), 1u);
   EXPECT_EQ (with_frame.models.front().instances.size(), 2u);
+  ASSERT_EQ (with_frame.model_sizes.size(), 1u); // the two boxes apart on the table
+  EXPECT_TRUE (with_frame.model_sizes.front().valid);
   const auto small = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> (32, 24);
   const std::size_t timed = with_frame.timing_ms.size();
   EXPECT_FALSE (mid::discoverFromKeypoints (
       mid::DiscoveryParameters(), with_frame, nullptr, small));
   EXPECT_TRUE (with_frame.models.empty()); // no partial output
+  EXPECT_TRUE (with_frame.model_sizes.empty());
   EXPECT_TRUE (with_frame.matches.empty());
   EXPECT_EQ (with_frame.timing_ms.size(), timed);
   EXPECT_EQ (with_frame.keypoints, keypoints_only.keypoints);

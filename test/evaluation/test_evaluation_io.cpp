@@ -70,6 +70,13 @@ TEST (EvaluationIO, ReadsBackTheResultJsonTheAppsWrite)
   instance.landmarks = {0, 1};
   model.instances.push_back (instance);
   result.models.push_back (model);
+  result.models.push_back (model);
+  // The first object's box was measured on two copies, the second's not at all.
+  mid::ModelSize box;
+  box.valid = true;
+  box.agreeing = 2;
+  box.size = Eigen::Vector3f (0.05f, 0.11f, 0.16f);
+  result.model_sizes = {box, mid::ModelSize()};
 
   const mid::test::TemporaryFolder folder;
   std::ofstream (folder.file ("result.json"))
@@ -77,7 +84,11 @@ TEST (EvaluationIO, ReadsBackTheResultJsonTheAppsWrite)
   mid::evaluation::DetectionResult read;
   ASSERT_TRUE (
       mid::evaluation::readDetectionResult (folder.file ("result.json"), read));
-  ASSERT_EQ (read.objects.size(), 1u);
+  ASSERT_EQ (read.objects.size(), 2u);
+  EXPECT_EQ (read.objects[0].box_size, box.size);
+  EXPECT_EQ (read.objects[0].box_copies, 2);
+  EXPECT_EQ (read.objects[1].box_size, Eigen::Vector3f::Zero());
+  EXPECT_EQ (read.objects[1].box_copies, 0);
   ASSERT_EQ (read.objects[0].instances.size(), 1u);
   EXPECT_EQ (read.objects[0].instances[0].pose, instance.pose);
   ASSERT_EQ (read.objects[0].instances[0].keypoints.size(), 2u);

@@ -329,3 +329,51 @@ TEST (FrameScore, RotationErrorsModuloTheShapeForgiveItsSymmetries)
     EXPECT_NEAR (
         without.symmetric_rotation_errors_deg[p], without.rotation_errors_deg[p], 1e-3);
 }
+
+TEST (ScoreSummary, ComparesTheBoxOfEveryCorrectObjectWithItsTypesSize)
+{
+  // Type 1 (0.07 x 0.07 x 0.2 m) found with a box 3 mm long agreed on by two copies; type 2
+  // (0.05 x 0.11 x 0.16 m) found with a box of two copies joined (0.10 m too wide) measured on
+  // one copy; a second object of type 1 (a false positive) with a box, and type 3 found without
+  // any: only the valid objects' boxes count, and type 3 counts as an object without a box.
+  const auto f = frame ({{1, 0}, {1, 150}, {2, 300}, {2, 450}, {3, 600}, {3, 750}});
+  DetectionResult r;
+  DetectedObject first{{instance (0, 20), instance (150, 20)}};
+  first.box_size = Eigen::Vector3f (0.07f, 0.07f, 0.203f);
+  first.box_copies = 2;
+  DetectedObject joined{{instance (300, 20), instance (450, 20)}};
+  joined.box_size = Eigen::Vector3f (0.05f, 0.16f, 0.21f);
+  joined.box_copies = 1;
+  DetectedObject second = first;
+  r.objects = {
+      first, joined, second, DetectedObject{{instance (600, 20), instance (750, 20)}}};
+  const auto score = mid::evaluation::scoreFrame (f, r);
+  ASSERT_EQ (score.object_boxes.size(), 3u);
+  EXPECT_EQ (score.object_boxes[0].type, 1);
+  EXPECT_EQ (score.object_boxes[0].copies, 2);
+  EXPECT_EQ (score.object_boxes[1].type, 2);
+  EXPECT_EQ (score.object_boxes[2].type, 3);
+  EXPECT_EQ (score.object_boxes[2].copies, 0);
+
+  mid::evaluation::ScoreSummary summary;
+  summary.add (score, r);
+  const mid::evaluation::ObjectSizeTable sizes = {
+      {1, {0.07, 0.07, 0.2}}, {2, {0.05, 0.11, 0.16}}, {3, {0.04, 0.09, 0.12}}};
+  const std::string report =
+      mid::evaluation::formatBoxSizeReport ({{"M_d", summary}}, sizes);
+  // Three objects, two with a box: errors 3 and 50 mm (median 26.5), one of two within 5 mm;
+  // the box of two copies alone: 3 mm.
+  EXPECT_NE (
+      report.find ("| M_d        |     3 |     2 |   26.5 | 0.500 | 0.500 |     1 |"
+                   "    3.0 | 1.000 | 1.000 |"),
+      std::string::npos)
+      << report;
+  EXPECT_NE (report.find ("| total      |     3 |     2 |"), std::string::npos)
+      << report;
+  // A type without a true size is left out.
+  const std::string without = mid::evaluation::formatBoxSizeReport (
+      {{"M_d", summary}}, {{1, {0.07, 0.07, 0.2}}});
+  EXPECT_NE (without.find ("| M_d        |     1 |     1 |    3.0 |"),
+             std::string::npos)
+      << without;
+}

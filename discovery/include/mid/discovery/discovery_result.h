@@ -2,6 +2,7 @@
 
 #include <mid/features/keypoint_types.h>
 #include <mid/registration/object_model.h>
+#include <mid/segmentation/model_size.h>
 
 #include <pcl/correspondence.h>
 
@@ -37,6 +38,15 @@ struct DiscoveryResult
   std::size_t rejected_clusters = 0;
   /** \brief The discovered objects, each with its instances (poses, keypoints). */
   ObjectModels models;
+  /** \brief The box each object's copies occupy on the table, one per model in the order of
+    * `models`, in the final model frames (not in the paper): ModelSize::valid when at least one
+    * copy was measured (a surface grown from its keypoints, stopped at creases and depth steps,
+    * off the support plane), ModelSize::agreeing how many copies agree on it. A copy joined
+    * with a touching neighbour, or partly hidden, measures too large or too small; the size
+    * most copies agree on is taken, so one measured copy alone is the least sure. All invalid
+    * for a frame without a support plane or without its organized cloud.
+    */
+  ModelSizes model_sizes;
   /** \brief Milliseconds per stage, in pipeline order: features, matching, triplets,
     * clustering, verification, modeling, detection, leftovers; then total.
     */

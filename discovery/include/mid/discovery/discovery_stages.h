@@ -12,7 +12,8 @@ namespace mid {
   * Appends the stages' times to result.timing_ms. With a peer grouping (PCL's classes) the
   * "triplets" stage is empty and "clustering" times the peer.
   * \param[in] parameters the parameters
-  * \param[in,out] result keypoints and descriptors in; matches, counts, models and times out;
+  * \param[in,out] result keypoints and descriptors in; matches, counts, models, their boxes
+  * on the table (DiscoveryResult::model_sizes, measured with `organized` only) and times out;
   * every model's frame is centred on its landmarks (centerModelFrame())
   * \param[in] surface the frame's points with normals; needed by Grouping::hough3d only
   * \param[in] organized the organized colour frame the keypoints were found in, with
@@ -22,8 +23,8 @@ namespace mid {
   * verification check every cluster (DiscoveryParameters::verify_clusters)
   * \return false (with a PCL_ERROR) if a stage refuses its input or parameters, or if
   * `organized` is given but result.image_keypoints do not give a pixel inside it for every
-  * keypoint; then result's matches, counts and models are empty and timing_ms is as it came
-  * in (keypoints, descriptors and image keypoints stay)
+  * keypoint; then result's matches, counts, models and boxes are empty and timing_ms is as it
+  * came in (keypoints, descriptors and image keypoints stay)
   */
 bool
 discoverFromKeypoints (

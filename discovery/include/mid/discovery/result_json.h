@@ -14,9 +14,11 @@ constexpr int DISCOVERY_JSON_VERSION = 1;
 /** \brief The discovery result as JSON (doc/result_format.md):
   * {"format": "mid-discovery-result", "version": 1, "input": ..., "timing_ms": {..., "total"},
   *  "counts": {"keypoints", "matches", "triplets", "clusters", "objects", "instances"},
-  *  "objects": [{"id", "landmarks", "diameter", "instances": [{"pose" (4x4 row-major, model to
-  *  camera, metres), "keypoints" ([u, v] pixels), "bbox" ([u_min, v_min, u_max, v_max]),
-  *  "rms_error"}]}]}.
+  *  "objects": [{"id", "landmarks", "diameter", "box" (null, or {"size" (edges ascending,
+  *  metres), "copies" (how many measured copies agree on it), "pose" (4x4 row-major, box frame
+  *  to model frame)}: DiscoveryResult::model_sizes), "instances": [{"pose" (4x4 row-major,
+  *  model to camera, metres), "keypoints" ([u, v] pixels), "bbox" ([u_min, v_min, u_max,
+  *  v_max]), "rms_error"}]}]}.
   * \param[in] result the result
   * \param[in] input a description of the input (e.g. the file name), written as given
   * \return the JSON text, ending in a newline

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <mid/evaluation/frame_score.h>
+#include <mid/evaluation/object_size.h>
 
 #include <map>
 #include <string>
@@ -45,6 +46,8 @@ struct ScoreSummary
   ///@{
   std::vector<int> found_shared_cells, missed_shared_cells;
   ///@}
+  /** \brief The box of every valid object (FrameScore::object_boxes). */
+  std::vector<ObjectBox> object_boxes;
 
   /** \brief Add one frame; its pair counts only if it holds only pairs.
     * \param[in] score the frame's score (scoreFrame())
@@ -128,6 +131,19 @@ formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
 std::string
 formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
                        const std::vector<double>& thresholds_deg);
+
+/** \brief How well the objects' boxes (the result JSON's "box") give the products' sizes: per
+  * scenario and in total, the valid objects (FrameScore::object_boxes), how many have a box,
+  * the median and the shares of 5 and 10 mm or less of the largest edge error
+  * (boxSizeErrorMm()), then the same for the boxes that two or more measured copies agree on.
+  * Objects of a type without a size in `sizes` are left out.
+  * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
+  * \param[in] sizes the true size of each type (loadBopModelSizes())
+  * \return a Markdown table, one line per scenario and one for the total
+  */
+std::string
+formatBoxSizeReport (const std::map<std::string, ScoreSummary>& scenarios,
+                     const ObjectSizeTable& sizes);
 
 /** \brief One method's scores per scenario, with the method's name (see formatComparison()). */
 struct MethodScores

@@ -20,11 +20,17 @@ struct DetectedInstance
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };
 
-/** \brief One discovered object: its instances. */
+/** \brief One discovered object: its instances, and the size of the box its copies occupy on
+  * the table.
+  */
 struct DetectedObject
 {
   /** \brief Its instances, in the order of the JSON. */
   std::vector<DetectedInstance, Eigen::aligned_allocator<DetectedInstance>> instances;
+  /** \brief box.size: edges ascending (metres); zero when the result gives no box. */
+  Eigen::Vector3f box_size = Eigen::Vector3f::Zero();
+  /** \brief box.copies: how many measured copies agree on that size; 0 without a box. */
+  int box_copies = 0;
 };
 
 /** \brief What a result JSON (doc/result_format.md) says about one frame. */

@@ -9,6 +9,14 @@
 namespace mid {
 namespace evaluation {
 
+/** \brief The box one valid object's result gives, and the type the object took. */
+struct ObjectBox
+{
+  int type = -1;                                  ///< the BOP obj_id the object took
+  Eigen::Vector3f size = Eigen::Vector3f::Zero(); ///< DetectedObject::box_size
+  int copies = 0;                                 ///< DetectedObject::box_copies
+};
+
 /** \brief How one frame's result scores against its annotations, by the rules of Abbeloos et
   * al. (3DV 2017, Sec. 4.2); see scoreFrame().
   */
@@ -60,6 +68,11 @@ struct FrameScore
     * though wrong for the print; equal to rotation_errors_deg for a type without symmetries.
     */
   std::vector<double> symmetric_rotation_errors_deg;
+  /** \brief Each valid object (one that took a repeated type), in the order of the result:
+    * the type it took and its result's box (DetectedObject::box_size and box_copies), for
+    * comparing the box with the type's true size.
+    */
+  std::vector<ObjectBox> object_boxes;
 };
 
 /** \brief Score one frame.

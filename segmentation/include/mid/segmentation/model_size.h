@@ -249,6 +249,18 @@ public:
   }
   ///@}
 
+  /** \brief Measure the box each model's copies occupy on the support plane
+    * (measureModelSizes()), for a user who wants the objects' sizes: a gripper's opening, a
+    * place to put an object down. The steps that derive from this class measure the same way.
+    * \param[in] models the models; their observations index the input keypoints
+    * \param[out] sizes one per model, in order; all invalid when the frame has no support plane
+    * (none given, and none holds kMinSupportPlaneShare of the frame)
+    * \return false (with a PCL_ERROR naming the problem, sizes empty) if an input or a
+    * parameter is unusable
+    */
+  bool
+  measure (const ObjectModels& models, ModelSizes& sizes) const;
+
 protected:
   /** \brief SupportPlaneMeasurement's input problem, or what is wrong with the size
     * parameters; empty if nothing.
