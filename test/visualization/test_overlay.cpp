@@ -1,10 +1,13 @@
 // renderOverlay on a scene with a known repeated pattern: every instance's box is drawn in its
-// object's color, and the rest of the image is the scene's color image, untouched.
+// object's color, and the rest of the image is the scene's color image, untouched; on boxes
+// lying on a table, each object's box is drawn where the true boxes are.
 
+#include "rendered_objects_scene.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
 #include <mid/discovery/multi_instance_discovery.h>
+#include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 #include <mid/visualization/overlay.h>
 
@@ -13,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace {
@@ -150,4 +154,78 @@ TEST (OverlayWithoutObjects, IsTheColorImage)
       const auto& point = scene.cloud->at (u, v);
       ASSERT_EQ (image.at<cv::Vec3b> (v, u), cv::Vec3b (point.b, point.g, point.r));
     }
+}
+
+TEST (OverlayBoxes, DrawsEachObjectsBoxOnEveryCopy)
+{
+  // Three copies of one box lying apart on a table: the result gives the object's box, agreed
+  // on by all three, and the overlay draws it at each instance's pose. The true boxes' edges, projected by the
+  // cloud's camera, are where the drawn edges are: most of their pixels (the visible and the
+  // hidden edges alike) lie within 3 pixels of one in the object's color.
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  const char* print = "bastoncini_cookie_box.png";
+  const auto scene = mid::test::renderBoxes (
+      {{print, size, mid::test::boxPose (-0.16, -0.1, z, 10.0)},
+       {print, size, mid::test::boxPose (0.16, -0.12, z, -35.0)},
+       {print, size, mid::test::boxPose (0.0, 0.12, z, 70.0)}},
+      0.95);
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  ASSERT_EQ (result.model_sizes.size(), 1u);
+  ASSERT_TRUE (result.model_sizes[0].valid);
+  cv::Mat image;
+  ASSERT_TRUE (mid::visualization::renderOverlay (*scene.cloud, result, image));
+  mid::io::CameraIntrinsics camera;
+  ASSERT_TRUE (mid::visualization::estimateIntrinsics (*scene.cloud, camera));
+
+  cv::Mat colored (image.size(), CV_8UC1, cv::Scalar (0));
+  const cv::Vec3b color = bgr (mid::visualization::objectColor (0));
+  for (int v = 0; v < image.rows; ++v)
+    for (int u = 0; u < image.cols; ++u)
+      colored.at<uchar> (v, u) = image.at<cv::Vec3b> (v, u) == color ? 255 : 0;
+  cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
+  for (const auto& box : scene.boxes) {
+    std::size_t near = 0, samples = 0;
+    for (int c = 0; c < 8; ++c)
+      for (int axis = 1; axis < 8; axis <<= 1) {
+        if ((c & axis) != 0)
+          continue;
+        const auto corner = [&] (int k) {
+          const Eigen::Vector3d local ((k & 1) ? 0.5 * size.x() : -0.5 * size.x(),
+                                       (k & 2) ? 0.5 * size.y() : -0.5 * size.y(),
+                                       (k & 4) ? 0.5 * size.z() : -0.5 * size.z());
+          const Eigen::Vector3d p = box.pose * local;
+          return Eigen::Vector2d (camera.fx * p.x() / p.z() + camera.cx,
+                                  camera.fy * p.y() / p.z() + camera.cy);
+        };
+        const Eigen::Vector2d a = corner (c), b = corner (c | axis);
+        for (int step = 0; step <= 20; ++step) {
+          const Eigen::Vector2d q = a + (b - a) * (step / 20.0);
+          const int u = static_cast<int> (std::lround (q.x())),
+                    v = static_cast<int> (std::lround (q.y()));
+          if (u < 0 || v < 0 || u >= image.cols || v >= image.rows)
+            continue;
+          ++samples;
+          near += colored.at<uchar> (v, u) != 0 ? 1 : 0;
+        }
+      }
+    ASSERT_GT (samples, 200u);
+    EXPECT_GT (static_cast<double> (near) / static_cast<double> (samples), 0.8)
+        << near << " of " << samples;
+  }
+  // Without the boxes in the result no edge is drawn, nor for a box one copy alone gives.
+  mid::DiscoveryResult without = result;
+  without.model_sizes.clear();
+  cv::Mat plain;
+  ASSERT_TRUE (mid::visualization::renderOverlay (*scene.cloud, without, plain));
+  EXPECT_GT (cv::norm (image, plain, cv::NORM_L1), 0.0);
+  mid::DiscoveryResult one_copy = result;
+  one_copy.model_sizes[0].agreeing = 1;
+  cv::Mat unsure;
+  ASSERT_TRUE (mid::visualization::renderOverlay (*scene.cloud, one_copy, unsure));
+  EXPECT_EQ (cv::norm (unsure, plain, cv::NORM_L1), 0.0);
 }

@@ -2,6 +2,7 @@
 
 #include <pcl/point_types.h>
 
+#include <array>
 #include <cmath>
 
 namespace mid {
@@ -57,6 +58,39 @@ drawInstance (const std::vector<cv::Point2f>& pixels,
                cv::Scalar (0, 0, 0),
                kThickness,
                cv::LINE_AA);
+}
+
+void
+drawBox (const Eigen::Matrix4f& box_to_camera,
+         const Eigen::Vector3f& size,
+         const io::CameraIntrinsics& intrinsics,
+         const cv::Scalar& color,
+         cv::Mat& image)
+{
+  // Corner c has the sign of axis a's half edge in bit a of c.
+  std::array<Eigen::Vector3f, 8> corners;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3f local ((c & 1) ? 0.5f * size.x() : -0.5f * size.x(),
+                                 (c & 2) ? 0.5f * size.y() : -0.5f * size.y(),
+                                 (c & 4) ? 0.5f * size.z() : -0.5f * size.z());
+    corners[static_cast<std::size_t> (c)] =
+        box_to_camera.topLeftCorner<3, 3>() * local +
+        box_to_camera.topRightCorner<3, 1>();
+  }
+  const auto pixel = [&intrinsics] (const Eigen::Vector3f& point) {
+    return cv::Point2d (intrinsics.fx * point.x() / point.z() + intrinsics.cx,
+                        intrinsics.fy * point.y() / point.z() + intrinsics.cy);
+  };
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 1; axis < 8; axis <<= 1) {
+      if ((c & axis) != 0)
+        continue; // each edge once, from its corner on the negative side
+      const Eigen::Vector3f& a = corners[static_cast<std::size_t> (c)];
+      const Eigen::Vector3f& b = corners[static_cast<std::size_t> (c | axis)];
+      if (!(a.z() > 0.0f) || !(b.z() > 0.0f))
+        continue;
+      cv::line (image, pixel (a), pixel (b), color, 1, cv::LINE_8);
+    }
 }
 
 } // namespace detail

@@ -16,7 +16,10 @@ namespace visualization {
   * drawn in its object's color (objectColor(), object = index in result.models): a small circle
   * (radius 3 pixels) on each of its keypoints, the rectangle around them (the `bbox` of the
   * result JSON, 2 pixels wide, rounded to whole pixels) and a label "object.instance" above it.
-  * Every other pixel keeps the scene's color.
+  * Under them, where the result gives an object's box on the table (DiscoveryResult::model_sizes)
+  * that two or more measured copies agree on (one copy alone is often measured joined with a
+  * neighbour), its 12 edges at each instance's pose, projected by the camera the cloud's own
+  * points give (estimateIntrinsics()), 1 pixel wide. Every other pixel keeps the scene's color.
   * \param[in] cloud the organized cloud the result was computed on
   * \param[in] result the result; its instances' keypoints index result.image_keypoints
   * \param[out] image 8-bit BGR image of the cloud's size (OpenCV's channel order); empty when
