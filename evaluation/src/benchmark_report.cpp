@@ -46,6 +46,22 @@ row (const std::string& name, const ScoreSummary& s)
   return line;
 }
 
+/** One row per scenario (`row (name, summary)`), in name order, then the "total" row of
+  * them all summed.
+  */
+template <typename Row>
+std::string
+rowsWithTotal (const std::map<std::string, ScoreSummary>& scenarios, const Row& row)
+{
+  std::string rows;
+  ScoreSummary total;
+  for (const auto& [name, summary] : scenarios) {
+    rows += row (name, summary);
+    total.add (summary);
+  }
+  return rows + row ("total", total);
+}
+
 /** The scenarios of a method plus its "total" (all scenarios summed), by name. */
 std::map<std::string, ScoreSummary>
 withTotal (const std::map<std::string, ScoreSummary>& scenarios)
@@ -280,13 +296,7 @@ formatReport (const std::map<std::string, ScoreSummary>& scenarios)
                        "pairs P | R | F1 | rot. err. deg (median) | transl. err. mm "
                        "(median) | time ms (median) | SIFT ms (median) |\n"
                        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  ScoreSummary total;
-  for (const auto& [name, summary] : scenarios) {
-    report += row (name, summary);
-    total.add (summary);
-  }
-  report += row ("total", total);
-  return report;
+  return report + rowsWithTotal (scenarios, row);
 }
 
 std::string
@@ -298,12 +308,12 @@ formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
       "30-99 | >= 100 | instances P | R (sharing >= " +
       std::to_string (min_shared_cells) +
       ") | F1 |\n|---|---|---|---|---|---|---|---|---|\n";
-  ScoreSummary total;
-  for (const auto& [name, summary] : scenarios) {
-    report += sharedSurfaceRow (name, summary, min_shared_cells);
-    total.add (summary);
-  }
-  return report + sharedSurfaceRow ("total", total, min_shared_cells);
+  return report +
+         rowsWithTotal (
+             scenarios,
+             [min_shared_cells] (const std::string& name, const ScoreSummary& summary) {
+               return sharedSurfaceRow (name, summary, min_shared_cells);
+             });
 }
 
 std::string
@@ -323,12 +333,11 @@ formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
       rule += "|---";
     }
   report += " |\n" + rule + "|\n";
-  ScoreSummary total;
-  for (const auto& [name, summary] : scenarios) {
-    report += poseErrorRow (name, summary, thresholds_deg);
-    total.add (summary);
-  }
-  return report + poseErrorRow ("total", total, thresholds_deg);
+  return report + rowsWithTotal (scenarios,
+                                 [&thresholds_deg] (const std::string& name,
+                                                    const ScoreSummary& summary) {
+                                   return poseErrorRow (name, summary, thresholds_deg);
+                                 });
 }
 
 std::string
@@ -339,12 +348,11 @@ formatBoxSizeReport (const std::map<std::string, ScoreSummary>& scenarios,
       "| scenario   | objects | with a box | edge err. mm (median) | <= 5 mm | "
       "<= 10 mm | box of 2+ copies | edge err. mm (median) | <= 5 mm | "
       "<= 10 mm |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  ScoreSummary total;
-  for (const auto& [name, summary] : scenarios) {
-    report += boxSizeRow (name, summary, sizes);
-    total.add (summary);
-  }
-  return report + boxSizeRow ("total", total, sizes);
+  return report + rowsWithTotal (
+                      scenarios,
+                      [&sizes] (const std::string& name, const ScoreSummary& summary) {
+                        return boxSizeRow (name, summary, sizes);
+                      });
 }
 
 std::string

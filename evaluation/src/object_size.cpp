@@ -3,11 +3,10 @@
 #include <mid/evaluation/object_size.h>
 
 #include <nlohmann/json.hpp>
-#include <pcl/console/print.h>
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace mid {
 namespace evaluation {
@@ -28,31 +27,19 @@ bool
 loadBopModelSizes (const std::string& path, ObjectSizeTable& table)
 {
   table.clear();
-  nlohmann::json models;
-  if (!detail::readJsonFile (path, "mid::evaluation::loadBopModelSizes", models))
-    return false;
-  try {
-    if (!models.is_object())
-      throw std::runtime_error ("not an object keyed by obj_id");
-    for (const auto& [key, model] : models.items()) {
-      std::size_t used = 0;
-      const int id = std::stoi (key, &used);
-      if (used != key.size())
-        throw std::runtime_error ("key '" + key + "' is no obj_id");
-      if (!model.contains ("size_x") && !model.contains ("size_y") &&
-          !model.contains ("size_z"))
-        continue;
-      const Eigen::Vector3d size (model.at ("size_x").get<double>(),
-                                  model.at ("size_y").get<double>(),
-                                  model.at ("size_z").get<double>());
-      if (!size.allFinite() || !(size.minCoeff() > 0.0))
-        throw std::runtime_error ("object " + key + " has no positive size");
-      table[id] = ascending (0.001 * size);
-    }
-  }
-  catch (const std::exception& error) {
-    PCL_ERROR (
-        "[mid::evaluation::loadBopModelSizes] '%s': %s\n", path.c_str(), error.what());
+  const auto read = [&table] (int id, const nlohmann::json& model) {
+    if (!model.contains ("size_x") && !model.contains ("size_y") &&
+        !model.contains ("size_z"))
+      return;
+    const Eigen::Vector3d size (model.at ("size_x").get<double>(),
+                                model.at ("size_y").get<double>(),
+                                model.at ("size_z").get<double>());
+    if (!size.allFinite() || !(size.minCoeff() > 0.0))
+      throw std::runtime_error ("object " + std::to_string (id) +
+                                " has no positive size");
+    table[id] = ascending (0.001 * size);
+  };
+  if (!detail::readBopModelsInfo (path, "mid::evaluation::loadBopModelSizes", read)) {
     table.clear();
     return false;
   }

@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <nlohmann/json.hpp>
-#include <pcl/console/print.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,24 +72,10 @@ bool
 loadBopModelSymmetries (const std::string& path, ObjectSymmetryTable& table)
 {
   table.clear();
-  json models;
-  if (!detail::readJsonFile (path, "mid::evaluation::loadBopModelSymmetries", models))
-    return false;
-  try {
-    if (!models.is_object())
-      throw std::runtime_error ("not an object keyed by obj_id");
-    for (const auto& [key, model] : models.items()) {
-      std::size_t used = 0;
-      const int id = std::stoi (key, &used);
-      if (used != key.size())
-        throw std::runtime_error ("key '" + key + "' is no obj_id");
-      table[id] = symmetriesOf (model);
-    }
-  }
-  catch (const std::exception& error) {
-    PCL_ERROR ("[mid::evaluation::loadBopModelSymmetries] '%s': %s\n",
-               path.c_str(),
-               error.what());
+  if (!detail::readBopModelsInfo (
+          path,
+          "mid::evaluation::loadBopModelSymmetries",
+          [&table] (int id, const json& model) { table[id] = symmetriesOf (model); })) {
     table.clear();
     return false;
   }

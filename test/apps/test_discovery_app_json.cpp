@@ -2,6 +2,7 @@
 // all-or-nothing writing.
 
 #include "app_runner.h"
+#include "pipeline_stages.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
@@ -12,6 +13,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -70,31 +73,10 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
   EXPECT_NE (json.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << json;
   // Two copies of one print: the verification confirms the cluster between them.
   EXPECT_NE (json.find ("\"rejected_clusters\": 0,"), std::string::npos) << json;
-  for (const char* stage : {"features",
-                            "matching",
-                            "triplets",
-                            "clustering",
-                            "verification",
-                            "modeling",
-                            "detection",
-                            "leftovers",
-                            "patches",
-                            "box_search",
-                            "surface",
-                            "size_split",
-                            "size_merge",
-                            "box_pruning",
-                            "repeated_prints",
-                            "size_search",
-                            "interpenetration",
-                            "size_disagreement",
-                            "box_turns",
-                            "support_prints",
-                            "observations",
-                            "box_sizes",
-                            "total"})
-    EXPECT_NE (json.find (std::string ("\"") + stage + "\": "), std::string::npos)
-        << stage;
+  std::vector<std::string> stages = mid::test::pipelineStages();
+  stages.emplace_back ("total");
+  for (const auto& stage : stages)
+    EXPECT_NE (json.find ("\"" + stage + "\": "), std::string::npos) << stage;
   EXPECT_NE (json.find ("\"box\": "), std::string::npos)
       << json; // an object's box, or null
   // One instance on each copy: its keypoints' box within the copy (plus SIFT's outline margin).

@@ -1,11 +1,13 @@
 // The second discovery round on the keypoints left over (DiscoveryParameters::
 // discover_leftovers), on keypoint scenes with known poses and descriptor distances.
+#include "pipeline_stages.h"
 #include "rigid_motion.h"
 
 #include <mid/discovery/discovery_stages.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -146,21 +148,9 @@ TEST (LeftoverRound, FindsAProductWhoseCopiesLookLessAlike)
   // removal of interpenetrating instances, of models of disagreeing sizes and of prints on the
   // table and the measurement of the objects' boxes do not run, but are timed; the pruning of
   // the observations runs.
-  const std::vector<std::string> last = {"leftovers",
-                                         "patches",
-                                         "box_search",
-                                         "surface",
-                                         "size_split",
-                                         "size_merge",
-                                         "box_pruning",
-                                         "repeated_prints",
-                                         "size_search",
-                                         "interpenetration",
-                                         "size_disagreement",
-                                         "box_turns",
-                                         "support_prints",
-                                         "observations",
-                                         "box_sizes"};
+  const auto& stages = mid::test::pipelineStages();
+  const std::vector<std::string> last (
+      std::find (stages.begin(), stages.end(), "leftovers"), stages.end());
   ASSERT_EQ (result.model_sizes.size(), 2u); // no frame: no box measured
   EXPECT_FALSE (result.model_sizes[0].valid || result.model_sizes[1].valid);
   ASSERT_GE (result.timing_ms.size(), last.size());

@@ -282,6 +282,26 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
 
 namespace {
 
+/** Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m, one per print, at four
+  * fixed places and turns (the first ones as many as prints are given).
+  */
+mid::test::RenderedObjectsScene
+boxesLyingOnATable (const std::vector<const char*>& prints)
+{
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  // x, y (metres) and turn (degrees) of each place.
+  const double places[4][3] = {{-0.16, -0.1, 10.0},
+                               {0.16, -0.12, -35.0},
+                               {-0.15, 0.12, 70.0},
+                               {0.17, 0.11, 160.0}};
+  std::vector<mid::test::BoxSpec> boxes;
+  for (std::size_t b = 0; b < prints.size() && b < 4; ++b)
+    boxes.push_back (
+        {prints[b], size, boxPose (places[b][0], places[b][1], z, places[b][2])});
+  return mid::test::renderBoxes (boxes, 0.95);
+}
+
 /** The object's box (DiscoveryResult::model_sizes) has the edges `size` (within 6 mm) and,
   * placed at each instance's pose, lies on that instance's box: its centre within 5 mm of the
   * box's, its longest edge along the box's x (the longest of every box here).
@@ -316,14 +336,7 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
   // Two copies show one print, two others another, all four boxes of one size lying on a
   // table: like the copies of one carton that show different faces. Appearance makes two
   // models; their boxes' size makes one object of them, unless the size merge is off.
-  const Eigen::Vector3d size (0.12, 0.09, 0.04);
-  const double z = 0.95 - 0.5 * size.z();
-  const auto scene =
-      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.16, -0.1, z, 10.0)},
-                               {kJuice, size, boxPose (0.16, -0.12, z, -35.0)},
-                               {kCookies, size, boxPose (0.17, 0.11, z, 160.0)},
-                               {kJuice, size, boxPose (-0.15, 0.12, z, 70.0)}},
-                              0.95);
+  const auto scene = boxesLyingOnATable ({kCookies, kJuice, kJuice, kCookies});
   mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
   discovery.setInputCloud (scene.cloud);
   // The two clusters (each print turned by 150 and 105 deg on the table) carry the grey
@@ -358,13 +371,7 @@ TEST (MultiInstanceDiscovery, ReportsTheBoxEachObjectsCopiesOccupyOnTheTable)
 {
   // Three copies of one box lying apart on a table: the object's box has the box's size, all
   // three copies agree on it, and placed at each instance's pose it is that copy's box.
-  const Eigen::Vector3d size (0.12, 0.09, 0.04);
-  const double z = 0.95 - 0.5 * size.z();
-  const auto scene =
-      mid::test::renderBoxes ({{kCookies, size, boxPose (-0.16, -0.1, z, 10.0)},
-                               {kCookies, size, boxPose (0.16, -0.12, z, -35.0)},
-                               {kCookies, size, boxPose (0.0, 0.12, z, 70.0)}},
-                              0.95);
+  const auto scene = boxesLyingOnATable ({kCookies, kCookies, kCookies});
   const auto result = discover (scene);
   ASSERT_EQ (result.models.size(), 1u);
   ASSERT_EQ (boxesOf (scene, result, result.models[0]).size(), 3u);
