@@ -33,6 +33,7 @@ struct Options
   float inlier_threshold = 0.005f;
   int min_inliers = 5;
   float min_inlier_ratio = 0.125f;
+  float min_inlier_spread = mid::ModelInstanceDetector().getMinInlierSpread();
   int iterations = 1000;
   unsigned seed = 0;
 };
@@ -69,6 +70,9 @@ printHelp (const char* program)
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
+  line ("-min_spread D",
+        "RANSAC inliers' least spread off their line, metres",
+        static_cast<double> (d.min_inlier_spread));
   line ("-iterations N", "RANSAC hypotheses per detection", d.iterations);
   line ("-seed S", "seed of the random draws", d.seed);
 }
@@ -80,6 +84,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-inlier", 1},
                                       {"-min_inliers", 1},
                                       {"-min_ratio", 1},
+                                      {"-min_spread", 1},
                                       {"-iterations", 1},
                                       {"-seed", 1}};
 
@@ -112,12 +117,18 @@ parseOptions (int argc, char** argv, Options& options)
       !parseNumber (argc, argv, "-inlier", options.inlier_threshold) ||
       !parseNumber (argc, argv, "-min_inliers", options.min_inliers) ||
       !parseNumber (argc, argv, "-min_ratio", options.min_inlier_ratio) ||
+      !parseNumber (argc, argv, "-min_spread", options.min_inlier_spread) ||
       !parseNumber (argc, argv, "-iterations", options.iterations) ||
       !parseNumber (argc, argv, "-seed", options.seed))
     return false;
   if (options.min_inliers < 3) {
     print_error ("Invalid parameter: min_inliers is %d, must be >= 3.\n",
                  options.min_inliers);
+    return false;
+  }
+  if (!(options.min_inlier_spread >= 0.0f)) {
+    print_error ("Invalid parameter: min_spread is %g, must be >= 0.\n",
+                 static_cast<double> (options.min_inlier_spread));
     return false;
   }
   return true;
@@ -170,6 +181,7 @@ main (int argc, char** argv)
   detector.setInlierThreshold (options.inlier_threshold);
   detector.setMinInliers (static_cast<std::size_t> (options.min_inliers));
   detector.setMinInlierRatio (options.min_inlier_ratio);
+  detector.setMinInlierSpread (options.min_inlier_spread);
   detector.setMaxIterations (options.iterations);
   detector.setSeed (options.seed);
   if (!detector.detect (model->instances))

@@ -245,6 +245,9 @@ printHelp (const char* program)
   line ("-min_ratio R",
         "RANSAC minimum inlier ratio",
         static_cast<double> (d.min_inlier_ratio));
+  line ("-min_spread D",
+        "RANSAC inliers' least spread off their line, metres",
+        static_cast<double> (d.min_inlier_spread));
   line ("-seed S", "seed of every random choice", d.seed);
   print_info (
       "  -keep_overlaps      keep instances that lie on one physical object (the "
@@ -457,6 +460,7 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-merge_inliers", 1},
                                       {"-merge_fraction", 1},
                                       {"-min_ratio", 1},
+                                      {"-min_spread", 1},
                                       {"-seed", 1},
                                       {"-grouping", 1},
                                       {"-gc_size", 1},
@@ -551,6 +555,7 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-leftover_desc_dist", p.leftover_descriptor_distance) &&
       parseNumber (argc, argv, "-leftover_margin", p.leftover_margin) &&
       parseNumber (argc, argv, "-min_ratio", p.min_inlier_ratio) &&
+      parseNumber (argc, argv, "-min_spread", p.min_inlier_spread) &&
       parseNumber (argc, argv, "-min_correlation", p.min_photometric_correlation) &&
       parseNumber (argc, argv, "-verify_radius", p.verification_radius) &&
       parseNumber (argc, argv, "-max_chroma", p.max_chromaticity_difference) &&

@@ -336,6 +336,10 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "min_inlier_ratio",
              static_cast<double> (p.min_inlier_ratio),
              "in [0, 1)");
+  c.require (p.min_inlier_spread >= 0.0f,
+             "min_inlier_spread",
+             static_cast<double> (p.min_inlier_spread),
+             ">= 0");
   c.require (
       p.ransac_iterations >= 1, "ransac_iterations", p.ransac_iterations, ">= 1");
   return c.ok();

@@ -38,7 +38,7 @@ mergeInliers (const DiscoveryParameters& p, const ObjectModel& a, const ObjectMo
 
 using detail::bestCopyLink;
 using detail::copiesLookApart;
-using detail::makeDetector;
+using detail::makeModelMatcher;
 using detail::modelAsKeypoints;
 
 bool
@@ -67,11 +67,12 @@ mergeMatchingModels (const DiscoveryParameters& p,
       modelAsKeypoints (models[i], *points);
       auto descriptors = pcl::make_shared<SIFTDescriptorCloud> (models[i].descriptors);
       ModelInstanceDetector detector =
-          makeDetector (p, std::make_shared<const ObjectModel> (models[j]));
+          makeModelMatcher (p,
+                            std::make_shared<const ObjectModel> (models[j]),
+                            mergeInliers (p, models[i], models[j]));
       detector.setInputKeypoints (points);
       detector.setInputDescriptors (descriptors);
       detector.setMaxInstances (1);
-      detector.setMinInliers (mergeInliers (p, models[i], models[j]));
       ModelInstances found;
       if (!detector.detect (found))
         return false;
@@ -110,8 +111,8 @@ mergeThroughRegions (const DiscoveryParameters& p,
                      const KeypointSurface& surface,
                      DiscoveryResult& result)
 {
-  ModelInstanceDetector detector = makeDetector (p, nullptr);
-  detector.setMinInliers (p.min_region_merge_inliers);
+  ModelInstanceDetector detector =
+      makeModelMatcher (p, nullptr, p.min_region_merge_inliers);
   RegionModelMerger merger;
   merger.setInputKeypoints (result.keypoints);
   merger.setInputDescriptors (result.descriptors);

@@ -31,12 +31,11 @@ matchesAnyModel (const DiscoveryParameters& p,
   for (const auto& other : models) {
     auto points = pcl::make_shared<KeypointCloud>();
     modelAsKeypoints (other, *points);
-    ModelInstanceDetector detector = makeDetector (p, shared);
+    ModelInstanceDetector detector = makeModelMatcher (p, shared, min_inliers);
     detector.setInputKeypoints (points);
     detector.setInputDescriptors (
         pcl::make_shared<SIFTDescriptorCloud> (other.descriptors));
     detector.setMaxInstances (1);
-    detector.setMinInliers (min_inliers);
     ModelInstances found;
     if (!detector.detect (found))
       return false;

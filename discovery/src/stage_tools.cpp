@@ -22,8 +22,20 @@ makeDetector (const DiscoveryParameters& p,
   detector.setInlierThreshold (p.inlier_threshold);
   detector.setMinInliers (p.min_inliers);
   detector.setMinInlierRatio (p.min_inlier_ratio);
+  detector.setMinInlierSpread (p.min_inlier_spread);
   detector.setMaxIterations (p.ransac_iterations);
   detector.setSeed (p.seed);
+  return detector;
+}
+
+ModelInstanceDetector
+makeModelMatcher (const DiscoveryParameters& p,
+                  const std::shared_ptr<const ObjectModel>& model,
+                  std::size_t min_inliers)
+{
+  ModelInstanceDetector detector = makeDetector (p, model);
+  detector.setMinInliers (min_inliers);
+  detector.setMinInlierSpread (0.0f);
   return detector;
 }
 

@@ -18,10 +18,21 @@
 namespace mid {
 namespace detail {
 
-/** A detector for one model with the pipeline's RANSAC parameters. */
+/** A detector for one model's instances among the frame's keypoints, with the pipeline's
+  * RANSAC parameters.
+  */
 ModelInstanceDetector
 makeDetector (const DiscoveryParameters& p,
               const std::shared_ptr<const ObjectModel>& model);
+
+/** A detector of `model` (null: set later) among another model's landmarks, with the
+  * pipeline's RANSAC parameters, at least `min_inliers` inliers and no test of the inliers'
+  * spread off a line (DiscoveryParameters::min_inlier_spread is the frame's detection's).
+  */
+ModelInstanceDetector
+makeModelMatcher (const DiscoveryParameters& p,
+                  const std::shared_ptr<const ObjectModel>& model,
+                  std::size_t min_inliers);
 
 /** Model `b` seen as a frame of keypoints: one point per descriptor, at its landmark. */
 void

@@ -1,6 +1,7 @@
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/rigid_transform.h>
 
+#include <Eigen/Eigenvalues>
 #include <opencv2/core.hpp>
 #include <pcl/console/print.h>
 
@@ -59,6 +60,22 @@ matchToModel (const ObjectModel& model,
   return matches;
 }
 
+/** The largest distance of a point from the line that fits the points best (through their
+  * centroid along their main axis); 0 for fewer than three points.
+  */
+float
+spreadOffLine (const Eigen::Matrix3Xf& points)
+{
+  if (points.cols() < 3)
+    return 0.0f;
+  const Eigen::Vector3f centroid = points.rowwise().mean();
+  const Eigen::Matrix3Xf centred = points.colwise() - centroid;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver (centred *
+                                                               centred.transpose());
+  const Eigen::Vector3f axis = solver.eigenvectors().col (2);
+  return (centred - axis * (axis.transpose() * centred)).colwise().norm().maxCoeff();
+}
+
 } // namespace
 
 bool
@@ -102,16 +119,17 @@ ModelInstanceDetector::hasValidParameters() const
 {
   if (!(max_descriptor_distance_ > 0.0f) || !(inlier_threshold_ > 0.0f) ||
       min_inliers_ < 3 || !(min_inlier_ratio_ >= 0.0f && min_inlier_ratio_ < 1.0f) ||
-      max_iterations_ < 1) {
+      !(min_inlier_spread_ >= 0.0f) || max_iterations_ < 1) {
     PCL_ERROR (
         "[mid::ModelInstanceDetector] Invalid parameter: descriptor distance %g, "
         "inlier "
         "threshold %g (> 0), min inliers %zu (>= 3), min inlier ratio %g (in [0, 1)), "
-        "iterations %d (>= 1).\n",
+        "min inlier spread %g (>= 0), iterations %d (>= 1).\n",
         static_cast<double> (max_descriptor_distance_),
         static_cast<double> (inlier_threshold_),
         min_inliers_,
         static_cast<double> (min_inlier_ratio_),
+        static_cast<double> (min_inlier_spread_),
         max_iterations_);
     return false;
   }
@@ -152,6 +170,7 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
     }
     return estimateRigidTransform (from, to);
   };
+  // The inliers of a pose; none when their keypoints lie along one line.
   const auto inliersOf = [&] (const Eigen::Matrix4f& pose) {
     std::vector<std::size_t> inliers;
     for (std::size_t i = 0; i < matches.size(); ++i)
@@ -159,6 +178,11 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
            pose.topRightCorner<3, 1>() - point (matches[i]))
               .norm() < inlier_threshold_)
         inliers.push_back (i);
+    Eigen::Matrix3Xf points (3, static_cast<Eigen::Index> (inliers.size()));
+    for (std::size_t i = 0; i < inliers.size(); ++i)
+      points.col (static_cast<Eigen::Index> (i)) = point (matches[inliers[i]]);
+    if (min_inlier_spread_ > 0.0f && !(spreadOffLine (points) >= min_inlier_spread_))
+      inliers.clear();
     return inliers;
   };
 

@@ -108,6 +108,7 @@ TEST (DetectApp, RefusesUnknownArgumentsAndMalformedNumbers)
         {" -inlier +5", "-inlier must be a number, got '+5'"},
         {" -inlier 0x8", "-inlier must be a number, got '0x8'"},
         {" -min_ratio 1e-50", "-min_ratio must be a number, got '1e-50'"},
+        {" -min_spread -0.001", "min_spread is -0.001, must be >= 0"},
         // A second model would be ignored.
         {" " + folder.file ("model_0.json"),
          "Give exactly one model file MODEL.json (got 2)"},

@@ -297,6 +297,7 @@ TEST_F (DiscoveryApp, RefusesNegativeOrZeroParameters)
                              "-leftover_desc_dist 0",
                              "-leftover_margin -0.01",
                              "-min_ratio -0.5",
+                             "-min_spread -0.001",
                              "-disagree_surrounded 1.5",
                              "-disagree_copies 1",
                              "-box_turn_gain 2.5",

@@ -283,10 +283,12 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
 namespace {
 
 /** Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m, one per print, at four
-  * fixed places and turns (the first ones as many as prints are given).
+  * fixed places and turns: the given places (indices 0 to 3), by default the first ones, as
+  * many as prints are given.
   */
 mid::test::RenderedObjectsScene
-boxesLyingOnATable (const std::vector<const char*>& prints)
+boxesLyingOnATable (const std::vector<const char*>& prints,
+                    const std::vector<std::size_t>& at = {0, 1, 2, 3})
 {
   const Eigen::Vector3d size (0.12, 0.09, 0.04);
   const double z = 0.95 - 0.5 * size.z();
@@ -296,9 +298,10 @@ boxesLyingOnATable (const std::vector<const char*>& prints)
                                {-0.15, 0.12, 70.0},
                                {0.17, 0.11, 160.0}};
   std::vector<mid::test::BoxSpec> boxes;
-  for (std::size_t b = 0; b < prints.size() && b < 4; ++b)
-    boxes.push_back (
-        {prints[b], size, boxPose (places[b][0], places[b][1], z, places[b][2])});
+  for (std::size_t b = 0; b < prints.size() && b < at.size(); ++b) {
+    const double* place = places[at[b]];
+    boxes.push_back ({prints[b], size, boxPose (place[0], place[1], z, place[2])});
+  }
   return mid::test::renderBoxes (boxes, 0.95);
 }
 
@@ -377,6 +380,21 @@ TEST (MultiInstanceDiscovery, ReportsTheBoxEachObjectsCopiesOccupyOnTheTable)
   ASSERT_EQ (boxesOf (scene, result, result.models[0]).size(), 3u);
   EXPECT_EQ (result.model_sizes.at (0).agreeing, 3);
   expectBoxOnEveryCopy (scene, result, 0, Eigen::Vector3f (0.04f, 0.09f, 0.12f));
+}
+
+TEST (MultiInstanceDiscovery, GivesACopyNoSecondInstanceOnKeypointsAlongOneLine)
+{
+  // Three copies of one box lying apart, the third turned 150 deg from the first. Six of the
+  // third's keypoints lie along one line, 2 mm off it at most: a pose of the model turned
+  // about that line, on its side, explains them all, and so the detector made a fourth
+  // instance of them on the third copy before it asked the inliers to spread off their line.
+  const auto scene = boxesLyingOnATable ({kCookies, kCookies, kCookies}, {0, 1, 3});
+  const auto result = discover (scene);
+  ASSERT_EQ (result.models.size(), 1u);
+  const auto boxes = boxesOf (scene, result, result.models[0]);
+  ASSERT_EQ (boxes.size(), 3u);
+  EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2}));
+  expectRelativePosesMatch (scene, result.models[0], boxes, 2.0, 0.005);
 }
 
 TEST (MultiInstanceDiscovery, ReportsNoObjectOfSheetsLyingFlatOnTheTable)

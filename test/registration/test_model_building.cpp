@@ -451,6 +451,53 @@ TEST (ModelInstanceDetector, RespectsCandidatesAndTheInlierRequirements)
   EXPECT_TRUE (found.empty());
 }
 
+TEST (ModelInstanceDetector, KeypointsAlongOneLineGiveNoInstance)
+{
+  // Six of the object's points lie along one line (1 mm either side of it, like a row of
+  // letters), the seventh 2 cm off it. Seen alone, the six fix no turn about the line: any
+  // such turn of the model keeps them all as inliers.
+  Frame f;
+  const int box = f.addObject (30);
+  auto& points = f.objects[static_cast<std::size_t> (box)];
+  for (int k = 0; k < 6; ++k)
+    points[static_cast<std::size_t> (k)] =
+        Eigen::Vector3f (-0.04f + 0.016f * static_cast<float> (k),
+                         0.01f + (k % 2 == 0 ? 0.001f : -0.001f),
+                         0.02f);
+  points[6] = Eigen::Vector3f (0.0f, 0.03f, 0.02f);
+  const auto copy = f.addInstance (box, pose (0.1f, 0.0f, 0.7f, {1, 1, 0}));
+  mid::ModelInstanceDetector detector;
+  detector.setModel (trueModel (f, box));
+  detector.setInputKeypoints (f.keypoints);
+  detector.setInputDescriptors (f.descriptors);
+  detector.setCandidates (
+      pcl::make_shared<pcl::Indices> (copy.begin(), copy.begin() + 6));
+  mid::ModelInstances found;
+  ASSERT_TRUE (detector.detect (found));
+  EXPECT_TRUE (found.empty());
+
+  // Without the test the six give an instance.
+  const float spread = detector.getMinInlierSpread();
+  detector.setMinInlierSpread (0.0f);
+  ASSERT_TRUE (detector.detect (found));
+  EXPECT_EQ (found.size(), 1u);
+
+  // The seventh point fixes the turn: the copy is found at its pose.
+  detector.setMinInlierSpread (spread);
+  detector.setCandidates (
+      pcl::make_shared<pcl::Indices> (copy.begin(), copy.begin() + 7));
+  ASSERT_TRUE (detector.detect (found));
+  ASSERT_EQ (found.size(), 1u);
+  EXPECT_EQ (found.front().keypoints.size(), 7u);
+  const auto error = poseError (found.front().pose, f.poses.front().matrix());
+  EXPECT_LT (error.first, 0.5 * M_PI / 180.0);
+  EXPECT_LT (error.second, 0.001);
+
+  detector.setMinInlierSpread (-0.01f);
+  EXPECT_FALSE (detector.detect (found));
+  EXPECT_TRUE (found.empty());
+}
+
 TEST (ModelMerging, TwoPartialModelsOfOneObjectBecomeOne)
 {
   Frame f;

@@ -475,12 +475,20 @@ struct DiscoveryParameters
   float observation_box_margin = 0.02f;
   ///@}
   /** \brief RANSAC inlier threshold 5 mm (> 0), at least 5 inliers (>= 3), inlier ratio above
-    * 12.5 % (min_inlier_ratio in [0, 1)).
+    * 12.5 % (min_inlier_ratio in [0, 1)); not in the paper: inliers spread at least
+    * min_inlier_spread (metres, >= 0; 0: no test) off the line that fits them best, 3.5 mm
+    * (the inlier threshold over sqrt(2), so that no quarter turn about the line keeps them
+    * all), as keypoints along one line leave the turn about it free
+    * (ModelInstanceDetector::setMinInlierSpread()); for instances among the frame's keypoints
+    * only: models matched against models (merge_models, merge_through_regions, the leftover
+    * round) share landmarks along a line, a row of print, and the test undid as many right
+    * merges as wrong ones on the benchmark (doc/benchmark.md, session 55).
     */
   ///@{
   float inlier_threshold = 0.005f;
   std::size_t min_inliers = 5;
   float min_inlier_ratio = 0.125f;
+  float min_inlier_spread = 0.0035f;
   ///@}
   /** \brief RANSAC hypotheses per detection (>= 1). */
   int ransac_iterations = 1000;

@@ -17,7 +17,9 @@ namespace mid {
   * maximum descriptor distance), giving landmark -> keypoint matches. RANSAC draws one match and
   * two more whose keypoints lie within the model's diameter of the first, fits the rigid pose of
   * the three landmarks onto the three keypoints, and counts inliers: matches whose landmark lands
-  * within the inlier threshold of its keypoint. The best hypothesis succeeds if it has at least
+  * within the inlier threshold of its keypoint; a hypothesis whose inliers' keypoints lie along
+  * one line (within the minimum inlier spread) does not count. The best hypothesis succeeds if
+  * it has at least
   * the minimum number of inliers and its inlier ratio exceeds the minimum, where the ratio is
   * taken over the matches whose keypoints lie within the model's reach of the hypothesis (the
   * model's diameter around its centre), so that it measures how well the model explains that
@@ -159,6 +161,26 @@ public:
   }
   ///@}
 
+  /** \brief How far (metres) the inliers' keypoints must spread off the line that fits them
+    * best: the largest distance of one from that line. Default 0.0035, the 5 mm inlier
+    * threshold over sqrt(2): a quarter turn about the line moves a keypoint that far off it by
+    * more than the threshold; must be >= 0 (0: no test). Not in the paper: keypoints along one
+    * line (a row of letters, an edge) fix no turn about it, so a hypothesis turned about the
+    * line keeps them all as inliers, and a model on its side or upside down passes the inlier
+    * tests. A hypothesis whose inliers spread less never counts.
+    */
+  ///@{
+  void
+  setMinInlierSpread (float spread)
+  {
+    min_inlier_spread_ = spread;
+  }
+  float
+  getMinInlierSpread () const
+  {
+    return min_inlier_spread_;
+  }
+  ///@}
   /** \brief RANSAC hypotheses per detection. Default 1000; must be >= 1. */
   ///@{
   void
@@ -228,6 +250,7 @@ private:
   float inlier_threshold_ = 0.005f;
   std::size_t min_inliers_ = 5;
   float min_inlier_ratio_ = 0.125f;
+  float min_inlier_spread_ = 0.0035f;
   int max_iterations_ = 1000;
   std::uint32_t seed_ = 0;
   std::size_t max_instances_ = 0;
