@@ -19,13 +19,12 @@ namespace mid {
   * the three landmarks onto the three keypoints, and counts inliers: matches whose landmark lands
   * within the inlier threshold of its keypoint; a hypothesis whose inliers' keypoints lie along
   * one line (within the minimum inlier spread) does not count. The best hypothesis succeeds if
-  * it has at least
-  * the minimum number of inliers and its inlier ratio exceeds the minimum, where the ratio is
-  * taken over the matches whose keypoints lie within the model's reach of the hypothesis (the
-  * model's diameter around its centre), so that it measures how well the model explains that
-  * region of the frame rather than how many other instances the frame holds. The pose is then
-  * re-estimated on the inliers (twice, recounting), the instance is recorded, its keypoints are
-  * removed, and the search repeats until a hypothesis fails.
+  * it has at least the minimum number of inliers and its inlier ratio exceeds the minimum, where
+  * the ratio is taken over the matches whose keypoints lie within the model's reach of the
+  * hypothesis (the model's diameter around its centre), so that it measures how well the model
+  * explains that region of the frame rather than how many other instances the frame holds. The
+  * pose is then re-estimated on the inliers (twice, recounting), the instance is recorded, its
+  * keypoints are removed, and the search repeats until a hypothesis fails.
   *
   * Random draws come from std::mt19937 seeded with the seed parameter: the same input and seed
   * give the same instances.
