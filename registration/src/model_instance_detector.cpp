@@ -170,7 +170,7 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
     }
     return estimateRigidTransform (from, to);
   };
-  // The inliers of a pose; none when their keypoints lie along one line.
+  // The matches a pose brings within the inlier threshold.
   const auto inliersOf = [&] (const Eigen::Matrix4f& pose) {
     std::vector<std::size_t> inliers;
     for (std::size_t i = 0; i < matches.size(); ++i)
@@ -178,12 +178,17 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
            pose.topRightCorner<3, 1>() - point (matches[i]))
               .norm() < inlier_threshold_)
         inliers.push_back (i);
+    return inliers;
+  };
+  // Whether inliers fix a pose: their keypoints do not all lie along one line. Asked only of
+  // a set that would become the best, as only the best set is ever kept.
+  const auto spreads = [&] (const std::vector<std::size_t>& inliers) {
+    if (!(min_inlier_spread_ > 0.0f))
+      return true;
     Eigen::Matrix3Xf points (3, static_cast<Eigen::Index> (inliers.size()));
     for (std::size_t i = 0; i < inliers.size(); ++i)
       points.col (static_cast<Eigen::Index> (i)) = point (matches[inliers[i]]);
-    if (min_inlier_spread_ > 0.0f && !(spreadOffLine (points) >= min_inlier_spread_))
-      inliers.clear();
-    return inliers;
+    return spreadOffLine (points) >= min_inlier_spread_;
   };
 
   std::mt19937 rng (seed_);
@@ -210,7 +215,7 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
           matches[near[0]].landmark == matches[near[1]].landmark)
         continue;
       std::vector<std::size_t> inliers = inliersOf (fit (sample));
-      if (inliers.size() > best.size())
+      if (inliers.size() > best.size() && spreads (inliers))
         best.swap (inliers);
     }
     if (best.size() < min_inliers_)
@@ -218,7 +223,7 @@ ModelInstanceDetector::detect (ModelInstances& instances) const
     Eigen::Matrix4f pose = fit (best);
     for (int refit = 0; refit < 2; ++refit) {
       std::vector<std::size_t> inliers = inliersOf (pose);
-      if (inliers.size() < 3)
+      if (inliers.size() < 3 || !spreads (inliers))
         break;
       best.swap (inliers);
       pose = fit (best);
