@@ -104,8 +104,11 @@ bool
 ResultFiles::write (const DiscoveryResult& result, const std::string& input_name)
 {
   for (std::size_t m = 0; !model_prefix_.empty() && m < result.models.size(); ++m)
-    if (!saveObjectModel (
-            model_prefix_ + std::to_string (m) + ".json", result.models[m], &files_))
+    if (!saveObjectModel (model_prefix_ + std::to_string (m) + ".json",
+                          result.models[m],
+                          m < result.model_sizes.size() ? result.model_sizes[m]
+                                                        : ModelSize(),
+                          &files_))
       return false;
   if (!json_path_.empty()) {
     std::ofstream json (json_temporary_);

@@ -150,7 +150,8 @@ main (int argc, char** argv)
 
   pcl::StopWatch watch;
   auto model = std::make_shared<mid::ObjectModel>();
-  if (!mid::loadObjectModel (options.model_path, *model))
+  mid::ModelSize box;
+  if (!mid::loadObjectModel (options.model_path, *model, box))
     return 1;
   auto cloud = pcl::make_shared<pcl::PointCloud<PointT>>();
   if (!mid::apps::loadScene (options.scene, *cloud))
@@ -188,8 +189,10 @@ main (int argc, char** argv)
     return 1;
   result.timing_ms.emplace_back ("detection", watch.getTime());
   result.timing_ms.emplace_back ("total", total.getTime());
-  if (!model->instances.empty())
+  if (!model->instances.empty()) {
     result.models.push_back (*model);
+    result.model_sizes.push_back (box);
+  }
 
   mid::apps::printResult (*cloud, result, load_ms);
   if (!options.pictures.write (cloud, result) ||

@@ -1,4 +1,5 @@
 #include <mid/discovery/result_json.h>
+#include <mid/registration/json_writing.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -8,16 +9,6 @@
 namespace mid {
 
 namespace {
-
-std::string
-number (double value)
-{
-  if (value == 0.0)
-    value = 0.0; // no "-0"
-  char buffer[32];
-  std::snprintf (buffer, sizeof (buffer), "%.9g", value);
-  return buffer;
-}
 
 std::string
 quoted (const std::string& text)
@@ -37,48 +28,20 @@ quoted (const std::string& text)
   return out + "\"";
 }
 
-/** A 4x4 matrix as a row-major nested list. */
-void
-writeMatrix (std::ostringstream& out, const Eigen::Matrix4f& matrix)
-{
-  out << "[";
-  for (int r = 0; r < 4; ++r) {
-    out << (r > 0 ? ", [" : "[");
-    for (int c = 0; c < 4; ++c)
-      out << (c > 0 ? ", " : "") << number (matrix (r, c));
-    out << "]";
-  }
-  out << "]";
-}
-
-/** The box an object's copies occupy on the table, or null when none was measured. */
-void
-writeBox (std::ostringstream& out, const ModelSize* size)
-{
-  if (!size || !size->valid) {
-    out << "null";
-    return;
-  }
-  out << "{\"size\": [" << number (size->size.x()) << ", " << number (size->size.y())
-      << ", " << number (size->size.z()) << "], \"copies\": " << size->agreeing
-      << ",\n             \"pose\": ";
-  writeMatrix (out, size->box_in_model);
-  out << "}";
-}
-
 void
 writeInstance (std::ostringstream& out,
                const ModelInstance& instance,
                const ImageKeypoints& image)
 {
   out << "        {\"pose\": ";
-  writeMatrix (out, instance.pose);
+  writeJsonMatrix (out, instance.pose);
   out << ",\n         \"keypoints\": [";
   float u_min = std::numeric_limits<float>::max(), v_min = u_min;
   float u_max = std::numeric_limits<float>::lowest(), v_max = u_max;
   for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
     const auto& kp = image[static_cast<std::size_t> (instance.keypoints[o])];
-    out << (o > 0 ? ", " : "") << "[" << number (kp.u) << ", " << number (kp.v) << "]";
+    out << (o > 0 ? ", " : "") << "[" << jsonNumber (kp.u) << ", " << jsonNumber (kp.v)
+        << "]";
     u_min = std::min (u_min, kp.u);
     v_min = std::min (v_min, kp.v);
     u_max = std::max (u_max, kp.u);
@@ -86,9 +49,9 @@ writeInstance (std::ostringstream& out,
   }
   out << "],\n         \"bbox\": [";
   if (!instance.keypoints.empty())
-    out << number (u_min) << ", " << number (v_min) << ", " << number (u_max) << ", "
-        << number (v_max);
-  out << "],\n         \"rms_error\": " << number (instance.rms_error) << "}";
+    out << jsonNumber (u_min) << ", " << jsonNumber (v_min) << ", "
+        << jsonNumber (u_max) << ", " << jsonNumber (v_max);
+  out << "],\n         \"rms_error\": " << jsonNumber (instance.rms_error) << "}";
 }
 
 } // namespace
@@ -105,7 +68,7 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
       << ",\n  \"timing_ms\": {";
   for (std::size_t i = 0; i < result.timing_ms.size(); ++i)
     out << (i > 0 ? ", " : "") << quoted (result.timing_ms[i].first) << ": "
-        << number (result.timing_ms[i].second);
+        << jsonNumber (result.timing_ms[i].second);
   out << "},\n  \"counts\": {\"keypoints\": "
       << (result.keypoints ? result.keypoints->size() : 0)
       << ", \"matches\": " << result.matches.size()
@@ -117,10 +80,12 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
     const auto& model = result.models[m];
     out << (m > 0 ? "," : "") << "\n    {\"id\": " << m
         << ", \"landmarks\": " << model.landmarks.size()
-        << ", \"diameter\": " << number (model.diameter) << ",\n     \"box\": ";
-    writeBox (out,
-              result.model_sizes.size() == result.models.size() ? &result.model_sizes[m]
-                                                                : nullptr);
+        << ", \"diameter\": " << jsonNumber (model.diameter) << ",\n     \"box\": ";
+    writeJsonBox (out,
+                  result.model_sizes.size() == result.models.size()
+                      ? &result.model_sizes[m]
+                      : nullptr,
+                  "\n             ");
     out << ",\n     \"instances\": [\n";
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
       writeInstance (out, model.instances[i], result.image_keypoints);

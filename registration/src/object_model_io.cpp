@@ -1,7 +1,9 @@
 #define PCL_NO_PRECOMPILE
 #include <mid/io/pcd_reader.h>
+#include <mid/registration/json_writing.h>
 #include <mid/registration/object_model_io.h>
 
+#include <nlohmann/json.hpp>
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/conversions.h>
@@ -12,7 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <limits>
 #include <sstream>
 
 namespace mid {
@@ -52,22 +54,75 @@ dataPathOf (const std::string& json_path)
 }
 
 bool
-fail (const std::string& message, ObjectModel& model)
+fail (const std::string& message, ObjectModel& model, ModelSize& box)
 {
   PCL_ERROR ("[mid::loadObjectModel] %s\n", message.c_str());
   model = ObjectModel();
+  box = ModelSize();
   return false;
 }
 
-/** The value of "key": number in a flat JSON object written by saveObjectModel(). */
+/** The number stored under `key` in a model file's header; false if there is none. */
 bool
-findNumber (const std::string& json, const std::string& key, double& value)
+findNumber (const nlohmann::json& header, const char* key, double& value)
 {
-  std::smatch match;
-  if (!std::regex_search (json, match, std::regex ("\"" + key + "\": (-?[0-9.eE+-]+)")))
+  const auto it = header.find (key);
+  if (it == header.end() || !it->is_number())
     return false;
-  value = std::stod (match[1]);
+  value = it->get<double>();
   return true;
+}
+
+/** Read `count` numbers of a JSON list into `values`; false if it is no such list. */
+bool
+readNumbers (const nlohmann::json& list, std::size_t count, float* values)
+{
+  if (!list.is_array() || list.size() != count)
+    return false;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!list[i].is_number())
+      return false;
+    values[i] = list[i].get<float>();
+  }
+  return true;
+}
+
+/** The box in a model file's header (writeJsonBox()): not valid when it is absent or null.
+  * \return the problem in words when it is malformed or no box (edges not positive and
+  * ascending, copies not at least 1, the pose no rigid transform); empty otherwise
+  */
+std::string
+readBox (const nlohmann::json& header, ModelSize& box)
+{
+  box = ModelSize();
+  const auto it = header.find ("box");
+  if (it == header.end() || it->is_null())
+    return "";
+  std::string problem = "its \"box\" is not 3 positive ascending edges, a number of "
+                        "copies of at least 1 and a 4x4 rigid pose";
+  if (!it->is_object() || !it->contains ("size") || !it->contains ("copies") ||
+      !it->contains ("pose") || !it->at ("copies").is_number_integer() ||
+      !readNumbers (it->at ("size"), 3, box.size.data()) ||
+      !it->at ("pose").is_array() || it->at ("pose").size() != 4)
+    return problem;
+  Eigen::Matrix<float, 4, 4, Eigen::RowMajor> pose;
+  for (std::size_t r = 0; r < 4; ++r)
+    if (!readNumbers (
+            it->at ("pose")[r], 4, pose.row (static_cast<Eigen::Index> (r)).data()))
+      return problem;
+  const long long copies = it->at ("copies").get<long long>();
+  const Eigen::Matrix3f rotation = pose.topLeftCorner<3, 3>();
+  if (!box.size.allFinite() || !(box.size.x() > 0.0f) || box.size.x() > box.size.y() ||
+      box.size.y() > box.size.z() || copies < 1 ||
+      copies > std::numeric_limits<int>::max() || !pose.allFinite() ||
+      pose.row (3) != Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) ||
+      !(rotation.transpose() * rotation).isIdentity (1e-3f) ||
+      !(rotation.determinant() > 0.0f))
+    return problem;
+  box.box_in_model = pose;
+  box.agreeing = static_cast<int> (copies);
+  box.valid = true;
+  return "";
 }
 
 } // namespace
@@ -75,6 +130,15 @@ findNumber (const std::string& json, const std::string& key, double& value)
 bool
 saveObjectModel (const std::string& path,
                  const ObjectModel& model,
+                 io::StagedFiles* staged)
+{
+  return saveObjectModel (path, model, ModelSize(), staged);
+}
+
+bool
+saveObjectModel (const std::string& path,
+                 const ObjectModel& model,
+                 const ModelSize& box,
                  io::StagedFiles* staged)
 {
   if (std::filesystem::path (path).extension() != ".json") {
@@ -106,7 +170,9 @@ saveObjectModel (const std::string& path,
        << std::filesystem::path (dataPathOf (path)).filename().string()
        << "\",\n  \"landmarks\": " << model.landmarks.size()
        << ",\n  \"descriptors\": " << model.descriptors.size()
-       << ",\n  \"diameter\": " << model.diameter << "\n}\n";
+       << ",\n  \"diameter\": " << jsonNumber (model.diameter) << ",\n  \"box\": ";
+  writeJsonBox (json, &box, "\n          ");
+  json << "\n}\n";
   json.close();
   if (!json || rows.empty() ||
       pcl::io::savePCDFileBinaryCompressed (data_temporary, rows) != 0 ||
@@ -122,39 +188,53 @@ saveObjectModel (const std::string& path,
 bool
 loadObjectModel (const std::string& path, ObjectModel& model)
 {
+  ModelSize box;
+  return loadObjectModel (path, model, box);
+}
+
+bool
+loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box)
+{
   model = ObjectModel();
+  box = ModelSize();
   std::ifstream file (path);
   if (!file)
-    return fail ("cannot open '" + path + "' (missing or unreadable)", model);
+    return fail ("cannot open '" + path + "' (missing or unreadable)", model, box);
   std::stringstream text;
   text << file.rdbuf();
-  const std::string json = text.str();
-  if (json.find (R"("format": "mid-object-model")") == std::string::npos)
+  const nlohmann::json header = nlohmann::json::parse (text.str(), nullptr, false);
+  const auto format = header.is_object() ? header.find ("format") : header.end();
+  if (header.is_discarded() || !header.is_object() || format == header.end() ||
+      *format != "mid-object-model")
     return fail ("'" + path +
-                     R"(' is not a mid object model (no "format": "mid-object-model"))",
-                 model);
+                     R"(' is not a mid object model (no JSON object with "format": )"
+                     R"("mid-object-model"; truncated?))",
+                 model,
+                 box);
   double version = 0.0, landmarks = 0.0, descriptors = 0.0, diameter = 0.0;
-  if (!findNumber (json, "version", version) ||
-      !findNumber (json, "landmarks", landmarks) ||
-      !findNumber (json, "descriptors", descriptors) ||
-      !findNumber (json, "diameter", diameter))
-    return fail (
-        "'" + path +
-            "' is truncated or lacks version, landmarks, descriptors or diameter",
-        model);
+  if (!findNumber (header, "version", version))
+    return fail ("'" + path + "' has no version", model, box);
   if (static_cast<int> (version) != OBJECT_MODEL_FILE_VERSION)
     return fail ("'" + path + "' is a model file of version " +
                      std::to_string (static_cast<int> (version)) +
                      "; this build reads version " +
                      std::to_string (OBJECT_MODEL_FILE_VERSION),
-                 model);
+                 model,
+                 box);
+  if (!findNumber (header, "landmarks", landmarks) ||
+      !findNumber (header, "descriptors", descriptors) ||
+      !findNumber (header, "diameter", diameter))
+    return fail ("'" + path + "' lacks landmarks, descriptors or diameter", model, box);
+  const std::string box_problem = readBox (header, box);
+  if (!box_problem.empty())
+    return fail ("'" + path + "': " + box_problem, model, box);
   const std::string data_path = dataPathOf (path);
   pcl::PointCloud<ModelFilePoint> rows;
   pcl::PCLPointCloud2 blob;
   std::string problem;
   if (!io::readCheckedPCD (
           data_path, blob, rows.sensor_origin_, rows.sensor_orientation_, problem))
-    return fail ("cannot read the model data: " + problem, model);
+    return fail ("cannot read the model data: " + problem, model, box);
   const auto hasField =
       [&blob] (const char* name, std::uint8_t datatype, std::uint32_t count) {
         const int index = pcl::getFieldIndex (blob, name);
@@ -167,19 +247,22 @@ loadObjectModel (const std::string& path, ObjectModel& model)
     return fail ("'" + data_path +
                      "' is not model data (it needs an int landmark and 128 float "
                      "descriptor values per row)",
-                 model);
+                 model,
+                 box);
   try {
     pcl::fromPCLPointCloud2 (blob, rows);
   }
   catch (const std::exception&) {
-    return fail ("'" + data_path + "' could not be converted (out of memory)", model);
+    return fail (
+        "'" + data_path + "' could not be converted (out of memory)", model, box);
   }
   if (rows.size() != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
     return fail ("'" + data_path + "' holds " + std::to_string (rows.size()) +
                      " descriptors, the header says " +
                      std::to_string (static_cast<long> (descriptors)) +
                      " (truncated or inconsistent)",
-                 model);
+                 model,
+                 box);
   model.landmarks.resize (static_cast<std::size_t> (landmarks));
   std::vector<bool> seen (model.landmarks.size(), false);
   for (const auto& row : rows) {
@@ -189,7 +272,8 @@ loadObjectModel (const std::string& path, ObjectModel& model)
       return fail ("'" + data_path + "' refers to landmark " +
                        std::to_string (row.landmark) + " of " +
                        std::to_string (model.landmarks.size()) + " or holds NaN",
-                   model);
+                   model,
+                   box);
     auto& landmark = model.landmarks[static_cast<std::size_t> (row.landmark)];
     landmark.getVector3fMap() = row.getVector3fMap();
     landmark.getNormalVector3fMap() = row.getNormalVector3fMap();
@@ -200,7 +284,7 @@ loadObjectModel (const std::string& path, ObjectModel& model)
     model.descriptor_landmarks.push_back (row.landmark);
   }
   if (std::find (seen.begin(), seen.end(), false) != seen.end())
-    return fail ("'" + data_path + "' lacks some landmarks", model);
+    return fail ("'" + data_path + "' lacks some landmarks", model, box);
   model.diameter = static_cast<float> (diameter);
   return true;
 }

@@ -1,14 +1,18 @@
 // pcl_multi_instance_detect with a model discovered by pcl_multi_instance_discovery.
 
 #include "app_runner.h"
+#include "rendered_objects_scene.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <pcl/io/pcd_io.h>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace {
 
@@ -37,7 +41,72 @@ discoverModel (const mid::test::TemporaryFolder& folder,
   return path;
 }
 
+/** A 4x4 matrix from a row-major nested JSON list. */
+Eigen::Matrix4f
+matrixOf (const nlohmann::json& rows)
+{
+  Eigen::Matrix4f matrix;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      matrix (r, c) = rows.at (static_cast<std::size_t> (r))
+                          .at (static_cast<std::size_t> (c))
+                          .get<float>();
+  return matrix;
+}
+
 } // namespace
+
+TEST (DetectApp, ReportsTheObjectsBoxAtEachInstance)
+{
+  // Three cookie boxes of 0.12 x 0.09 x 0.04 m lying apart on a table: discovery measures the
+  // object's box, which all three agree on, and saves it with the model. In another frame,
+  // with copies at a new place and at an old one, the detection reports that box, and placed
+  // at each instance it lies on that copy's box.
+  const char* cookies = "bastoncini_cookie_box.png";
+  const mid::test::TemporaryFolder folder;
+  const auto seen = mid::test::boxesLyingOnATable ({cookies, cookies, cookies});
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
+  const auto discovered =
+      mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
+                             " -models " + folder.file ("model_"));
+  ASSERT_EQ (discovered.exit_code, 0) << discovered.output;
+  const auto other = mid::test::boxesLyingOnATable ({cookies, cookies}, {3, 0});
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("other.pcd"), *other.cloud),
+      0);
+  const auto detected = mid::test::runCommand (
+      detectApp() + " " + folder.file ("model_0.json") + " " +
+      folder.file ("other.pcd") + " -json " + folder.file ("out.json"));
+  ASSERT_EQ (detected.exit_code, 0) << detected.output;
+  EXPECT_NE (detected.output.find ("(agreed by 3 copies)"), std::string::npos)
+      << detected.output;
+
+  const auto result = nlohmann::json::parse (std::ifstream (folder.file ("out.json")));
+  ASSERT_EQ (result.at ("objects").size(), 1u);
+  const auto& object = result.at ("objects").at (0);
+  ASSERT_TRUE (object.at ("box").is_object()) << object.dump();
+  const auto& box = object.at ("box");
+  EXPECT_EQ (box.at ("copies").get<int>(), 3);
+  const Eigen::Vector3f size (box.at ("size").at (0).get<float>(),
+                              box.at ("size").at (1).get<float>(),
+                              box.at ("size").at (2).get<float>());
+  EXPECT_LT ((size - Eigen::Vector3f (0.04f, 0.09f, 0.12f)).cwiseAbs().maxCoeff(),
+             0.006f)
+      << size.transpose();
+  const Eigen::Matrix4f box_in_model = matrixOf (box.at ("pose"));
+  ASSERT_EQ (object.at ("instances").size(), 2u);
+  std::set<std::size_t> copies;
+  for (const auto& instance : object.at ("instances")) {
+    const Eigen::Matrix4f placed = matrixOf (instance.at ("pose")) * box_in_model;
+    for (std::size_t b = 0; b < other.boxes.size(); ++b) {
+      const Eigen::Vector3f centre = other.boxes[b].pose.translation().cast<float>();
+      if ((placed.topRightCorner<3, 1>() - centre).norm() < 0.005f)
+        copies.insert (b);
+    }
+  }
+  EXPECT_EQ (copies, (std::set<std::size_t>{0, 1}));
+}
 
 TEST (DetectApp, FindsTheInstancesOfADiscoveredModel)
 {

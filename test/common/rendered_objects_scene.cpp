@@ -31,6 +31,63 @@ boxPose (double x, double y, double z, double roll, double tilt)
 }
 
 RenderedObjectsScene
+boxesLyingOnATable (const std::vector<const char*>& prints,
+                    const std::vector<std::size_t>& at)
+{
+  const Eigen::Vector3d size (0.12, 0.09, 0.04);
+  const double z = 0.95 - 0.5 * size.z();
+  // x, y (metres) and turn (degrees) of each place.
+  const double places[4][3] = {{-0.16, -0.1, 10.0},
+                               {0.16, -0.12, -35.0},
+                               {-0.15, 0.12, 70.0},
+                               {0.17, 0.11, 160.0}};
+  std::vector<BoxSpec> boxes;
+  for (std::size_t b = 0; b < prints.size() && b < at.size(); ++b) {
+    const double* place = places[at[b]];
+    boxes.push_back ({prints[b], size, boxPose (place[0], place[1], z, place[2])});
+  }
+  return renderBoxes (boxes, 0.95);
+}
+
+double
+shareOfBoxEdgesOn (const cv::Mat& mask,
+                   const BoxSpec& box,
+                   double fx,
+                   double fy,
+                   double cx,
+                   double cy,
+                   std::size_t* samples)
+{
+  // Corner k has the sign of axis a's half edge in bit a of k.
+  const auto corner = [&] (int k) {
+    const Eigen::Vector3d local ((k & 1) ? 0.5 * box.size.x() : -0.5 * box.size.x(),
+                                 (k & 2) ? 0.5 * box.size.y() : -0.5 * box.size.y(),
+                                 (k & 4) ? 0.5 * box.size.z() : -0.5 * box.size.z());
+    const Eigen::Vector3d p = box.pose * local;
+    return Eigen::Vector2d (fx * p.x() / p.z() + cx, fy * p.y() / p.z() + cy);
+  };
+  std::size_t on = 0, inside = 0;
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 1; axis < 8; axis <<= 1) {
+      if ((c & axis) != 0)
+        continue; // each edge once, from its corner on the negative side
+      const Eigen::Vector2d a = corner (c), b = corner (c | axis);
+      for (int step = 0; step <= 20; ++step) {
+        const Eigen::Vector2d q = a + (b - a) * (step / 20.0);
+        const int u = static_cast<int> (std::lround (q.x())),
+                  v = static_cast<int> (std::lround (q.y()));
+        if (u < 0 || v < 0 || u >= mask.cols || v >= mask.rows)
+          continue;
+        ++inside;
+        on += mask.at<uchar> (v, u) != 0 ? 1 : 0;
+      }
+    }
+  if (samples)
+    *samples = inside;
+  return inside > 0 ? static_cast<double> (on) / static_cast<double> (inside) : 0.0;
+}
+
+RenderedObjectsScene
 renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth, double view_tilt)
 {
   const Eigen::Isometry3d turn =

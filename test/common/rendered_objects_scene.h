@@ -3,6 +3,7 @@
 #include <mid/simulation/rendered_frame.h>
 
 #include <Eigen/Geometry>
+#include <opencv2/core.hpp>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -54,6 +55,29 @@ RenderedObjectsScene
 renderBoxes (const std::vector<BoxSpec>& boxes,
              double table_depth = 0.0,
              double view_tilt = 0.0);
+
+/** \brief Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m, one per print (a
+  * texture as in BoxSpec), at four fixed places and turns: the given places (indices 0 to 3),
+  * by default the first ones, as many as prints are given.
+  */
+RenderedObjectsScene
+boxesLyingOnATable (const std::vector<const char*>& prints,
+                    const std::vector<std::size_t>& at = {0, 1, 2, 3});
+
+/** \brief How much of a box's outline a picture shows: the share of the points along its 12
+  * edges (21 per edge, ends included), projected by a pinhole camera, that fall on a non-zero
+  * pixel of `mask` (8-bit, the picture's pixels that show a box).
+  * \param[out] samples if given, how many of those points fall inside the mask's image
+  * \return the share of the points inside the image; 0 if none is
+  */
+double
+shareOfBoxEdgesOn (const cv::Mat& mask,
+                   const BoxSpec& box,
+                   double fx,
+                   double fy,
+                   double cx,
+                   double cy,
+                   std::size_t* samples = nullptr);
 
 /** \brief The box (index into the scene's boxes) most of the given image keypoints lie on, or -1
   * if most lie on the background (or outside the image), and, when `share` is given, the share

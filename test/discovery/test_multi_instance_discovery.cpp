@@ -18,6 +18,7 @@
 
 namespace {
 
+using mid::test::boxesLyingOnATable;
 using mid::test::boxPose;
 using mid::test::BoxSpec;
 
@@ -281,29 +282,6 @@ TEST (MultiInstanceDiscovery, TwoObjectTypesGiveTwoModels)
 }
 
 namespace {
-
-/** Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m, one per print, at four
-  * fixed places and turns: the given places (indices 0 to 3), by default the first ones, as
-  * many as prints are given.
-  */
-mid::test::RenderedObjectsScene
-boxesLyingOnATable (const std::vector<const char*>& prints,
-                    const std::vector<std::size_t>& at = {0, 1, 2, 3})
-{
-  const Eigen::Vector3d size (0.12, 0.09, 0.04);
-  const double z = 0.95 - 0.5 * size.z();
-  // x, y (metres) and turn (degrees) of each place.
-  const double places[4][3] = {{-0.16, -0.1, 10.0},
-                               {0.16, -0.12, -35.0},
-                               {-0.15, 0.12, 70.0},
-                               {0.17, 0.11, 160.0}};
-  std::vector<mid::test::BoxSpec> boxes;
-  for (std::size_t b = 0; b < prints.size() && b < at.size(); ++b) {
-    const double* place = places[at[b]];
-    boxes.push_back ({prints[b], size, boxPose (place[0], place[1], z, place[2])});
-  }
-  return mid::test::renderBoxes (boxes, 0.95);
-}
 
 /** The object's box (DiscoveryResult::model_sizes) has the edges `size` (within 6 mm) and,
   * placed at each instance's pose, lies on that instance's box: its centre within 5 mm of the

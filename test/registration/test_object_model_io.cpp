@@ -2,6 +2,7 @@
 
 #include <mid/registration/object_model_io.h>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
@@ -12,6 +13,7 @@
 #include <random>
 #include <regex>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -43,6 +45,21 @@ randomModel ()
   return model;
 }
 
+/** A box as ModelSizeMeasurement gives one: edges ascending (metres), a rigid pose. */
+mid::ModelSize
+someBox ()
+{
+  mid::ModelSize box;
+  box.valid = true;
+  box.agreeing = 3;
+  box.size = Eigen::Vector3f (0.041f, 0.0893f, 0.1207f);
+  Eigen::Affine3f pose (
+      Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.0f, -2.0f, 0.5f).normalized()));
+  pose.translation() = Eigen::Vector3f (0.012f, -0.003f, 0.021f);
+  box.box_in_model = pose.matrix();
+  return box;
+}
+
 class ObjectModelIO : public ::testing::Test
 {
 protected:
@@ -70,6 +87,12 @@ protected:
     EXPECT_FALSE (mid::loadObjectModel (path_, model));
     EXPECT_TRUE (model.landmarks.empty());
     EXPECT_TRUE (model.descriptors.empty());
+    mid::ModelSize box = someBox();
+    model = randomModel();
+    EXPECT_FALSE (mid::loadObjectModel (path_, model, box));
+    EXPECT_TRUE (model.landmarks.empty());
+    EXPECT_FALSE (box.valid);
+    EXPECT_EQ (box.agreeing, 0);
   }
 
   mid::test::TemporaryFolder folder_;
@@ -100,6 +123,64 @@ TEST_F (ObjectModelIO, ReloadsIdentically)
   EXPECT_NEAR (loaded.diameter, original.diameter, 1e-5f);
   EXPECT_TRUE (fs::exists (dir_ / "model.pcd"));
   EXPECT_EQ (folder_.entries(), 2u);
+}
+
+TEST_F (ObjectModelIO, ReloadsTheBoxIdentically)
+{
+  // Saved without a box: none comes back.
+  mid::ObjectModel model;
+  mid::ModelSize box = someBox();
+  ASSERT_TRUE (mid::loadObjectModel (path_, model, box));
+  EXPECT_FALSE (box.valid);
+  // With one: the same edges, copies and pose, bit for bit, and the same model.
+  const mid::ModelSize original = someBox();
+  ASSERT_TRUE (mid::saveObjectModel (path_, randomModel(), original));
+  ASSERT_TRUE (mid::loadObjectModel (path_, model, box));
+  EXPECT_TRUE (box.valid);
+  EXPECT_EQ (box.agreeing, original.agreeing);
+  EXPECT_EQ (box.size, original.size);
+  EXPECT_EQ (box.box_in_model, original.box_in_model);
+  EXPECT_EQ (model.descriptor_landmarks, randomModel().descriptor_landmarks);
+  // A box that is not valid (too few copies agree) is not stored.
+  mid::ModelSize unsure = original;
+  unsure.valid = false;
+  ASSERT_TRUE (mid::saveObjectModel (path_, randomModel(), unsure));
+  ASSERT_TRUE (mid::loadObjectModel (path_, model, box));
+  EXPECT_FALSE (box.valid);
+}
+
+TEST_F (ObjectModelIO, ReadsAFileWrittenBeforeBoxesWereStored)
+{
+  rewriteJson (R"(,\s*"box": null)", "");
+  std::ifstream in (path_);
+  const std::string text ((std::istreambuf_iterator<char> (in)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_EQ (text.find ("box"), std::string::npos) << text;
+  mid::ObjectModel model;
+  mid::ModelSize box = someBox();
+  ASSERT_TRUE (mid::loadObjectModel (path_, model, box));
+  EXPECT_FALSE (box.valid);
+  EXPECT_EQ (model.descriptor_landmarks, randomModel().descriptor_landmarks);
+}
+
+TEST_F (ObjectModelIO, RefusesAMalformedBox)
+{
+  const std::vector<std::pair<std::string, std::string>> rewrites = {
+      {R"("copies": 3)", R"("copies": 0)"},
+      {R"("size": \[[^\]]*\])", R"("size": [0.05, 0.04, 0.12])"},
+      {R"("size": \[[^\]]*\])", R"("size": [0.04, 0.09])"},
+      {R"("size": \[[^\]]*\])", R"("size": [0, 0.09, 0.12])"},
+      {R"("pose": \[\[.*\]\])",
+       R"("pose": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"},
+      {R"("pose": \[\[.*\]\])",
+       R"("pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]])"},
+      {R"("box": \{)", R"("box": "large", "old": {)"}};
+  for (const auto& [from, to] : rewrites) {
+    ASSERT_TRUE (mid::saveObjectModel (path_, randomModel(), someBox()));
+    rewriteJson (from, to);
+    SCOPED_TRACE (to);
+    expectRefused();
+  }
 }
 
 TEST_F (ObjectModelIO, RefusesMissingFiles)

@@ -189,33 +189,11 @@ TEST (OverlayBoxes, DrawsEachObjectsBoxOnEveryCopy)
       colored.at<uchar> (v, u) = image.at<cv::Vec3b> (v, u) == color ? 255 : 0;
   cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
   for (const auto& box : scene.boxes) {
-    std::size_t near = 0, samples = 0;
-    for (int c = 0; c < 8; ++c)
-      for (int axis = 1; axis < 8; axis <<= 1) {
-        if ((c & axis) != 0)
-          continue;
-        const auto corner = [&] (int k) {
-          const Eigen::Vector3d local ((k & 1) ? 0.5 * size.x() : -0.5 * size.x(),
-                                       (k & 2) ? 0.5 * size.y() : -0.5 * size.y(),
-                                       (k & 4) ? 0.5 * size.z() : -0.5 * size.z());
-          const Eigen::Vector3d p = box.pose * local;
-          return Eigen::Vector2d (camera.fx * p.x() / p.z() + camera.cx,
-                                  camera.fy * p.y() / p.z() + camera.cy);
-        };
-        const Eigen::Vector2d a = corner (c), b = corner (c | axis);
-        for (int step = 0; step <= 20; ++step) {
-          const Eigen::Vector2d q = a + (b - a) * (step / 20.0);
-          const int u = static_cast<int> (std::lround (q.x())),
-                    v = static_cast<int> (std::lround (q.y()));
-          if (u < 0 || v < 0 || u >= image.cols || v >= image.rows)
-            continue;
-          ++samples;
-          near += colored.at<uchar> (v, u) != 0 ? 1 : 0;
-        }
-      }
+    std::size_t samples = 0;
+    const double share = mid::test::shareOfBoxEdgesOn (
+        colored, box, camera.fx, camera.fy, camera.cx, camera.cy, &samples);
     ASSERT_GT (samples, 200u);
-    EXPECT_GT (static_cast<double> (near) / static_cast<double> (samples), 0.8)
-        << near << " of " << samples;
+    EXPECT_GT (share, 0.8);
   }
   // Without the boxes in the result no edge is drawn, nor for a box one copy alone gives.
   mid::DiscoveryResult without = result;

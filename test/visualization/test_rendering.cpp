@@ -3,16 +3,19 @@
 // landmarks, projected with the camera model, appear in their object's color.
 
 #include "app_runner.h"
+#include "rendered_objects_scene.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
 #include <mid/discovery/multi_instance_discovery.h>
 #include <mid/io/organized_cloud_io.h>
 #include <mid/visualization/discovery_viewer.h>
+#include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
@@ -177,6 +180,60 @@ TEST_F (Rendering, MatchLinesAndAnotherViewpointChangeThePicture)
   EXPECT_GT (cv::norm (plain, matches, cv::NORM_L1), 1000.0);
   EXPECT_GT (cv::norm (plain, turned, cv::NORM_L1), 1000.0);
   EXPECT_GT (countColor (turned, objectBgr (0), 0, turned.cols), 20u);
+}
+
+TEST (RenderingBoxes, DrawsEachObjectsBoxOnEveryCopy)
+{
+  // Three copies of one box lying apart on a table: the view through the camera draws the
+  // object's box, which all three agree on, at each instance in the object's colour in front
+  // of the scene. Most points along the true boxes' projected edges then lie within 3 pixels
+  // of that colour; without the boxes in the result, or with a box one copy alone gives, few
+  // do (the landmarks, in that colour too, lie inside the boxes' outlines).
+  ASSERT_NE (std::getenv ("DISPLAY"), nullptr) << "run this test under xvfb-run -a";
+  const char* print = "bastoncini_cookie_box.png";
+  const auto scene = mid::test::boxesLyingOnATable ({print, print, print});
+  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
+  discovery.setInputCloud (scene.cloud);
+  mid::DiscoveryResult result;
+  ASSERT_TRUE (discovery.discover (result));
+  ASSERT_EQ (result.models.size(), 1u);
+  ASSERT_EQ (result.model_sizes.size(), 1u);
+  ASSERT_TRUE (result.model_sizes[0].valid);
+  ASSERT_GE (result.model_sizes[0].agreeing, 2);
+  mid::io::CameraIntrinsics camera;
+  ASSERT_TRUE (mid::visualization::estimateIntrinsics (*scene.cloud, camera));
+
+  const mid::test::TemporaryFolder folder;
+  const auto edgesShown = [&] (const mid::DiscoveryResult& shown) {
+    mid::visualization::DiscoveryViewer<pcl::PointXYZRGBA> viewer;
+    viewer.setInputCloud (scene.cloud);
+    viewer.setResult (shown);
+    viewer.setShowModelPanel (false);
+    EXPECT_TRUE (
+        viewer.saveScreenshot (folder.file ("boxes.png"), kImageWidth, kImageHeight));
+    const cv::Mat image = cv::imread (folder.file ("boxes.png"), cv::IMREAD_COLOR);
+    cv::Mat colored (image.size(), CV_8UC1, cv::Scalar (0));
+    for (int v = 0; v < image.rows; ++v)
+      for (int u = 0; u < image.cols; ++u)
+        colored.at<uchar> (v, u) =
+            similar (image.at<cv::Vec3b> (v, u), objectBgr (0)) ? 255 : 0;
+    cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
+    std::vector<double> shares;
+    for (const auto& box : scene.boxes)
+      shares.push_back (mid::test::shareOfBoxEdgesOn (
+          colored, box, camera.fx, camera.fy, camera.cx, camera.cy));
+    return shares;
+  };
+  for (const double share : edgesShown (result))
+    EXPECT_GT (share, 0.8);
+  mid::DiscoveryResult without = result;
+  without.model_sizes.clear();
+  for (const double share : edgesShown (without))
+    EXPECT_LT (share, 0.5);
+  mid::DiscoveryResult one_copy = result;
+  one_copy.model_sizes[0].agreeing = 1;
+  for (const double share : edgesShown (one_copy))
+    EXPECT_LT (share, 0.5);
 }
 
 TEST_F (Rendering, RefusesAnUnwritableFile)

@@ -2,10 +2,12 @@
 #include <mid/visualization/impl/discovery_viewer.hpp>
 
 #include <pcl/point_types.h>
+#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkErrorCode.h>
 #include <vtkLogger.h>
 #include <vtkPNGWriter.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 #include <vtkRenderWindow.h>
@@ -191,6 +193,48 @@ addModelPanel (pcl::visualization::PCLVisualizer& viewer,
     viewer.createViewPortCamera (viewport);
     addModel (viewer, models[m], m, viewport, static_cast<int> (height / rows));
   }
+}
+
+void
+addBox (pcl::visualization::PCLVisualizer& viewer,
+        const Eigen::Matrix4f& box_to_camera,
+        const Eigen::Vector3f& size,
+        const ObjectColor& color,
+        const std::string& id,
+        int viewport)
+{
+  using namespace pcl::visualization;
+  const Eigen::Matrix3f rotation = box_to_camera.topLeftCorner<3, 3>();
+  if (!viewer.addCube (Eigen::Vector3f (box_to_camera.topRightCorner<3, 1>()),
+                       Eigen::Quaternionf (rotation),
+                       size.x(),
+                       size.y(),
+                       size.z(),
+                       id,
+                       viewport))
+    return;
+  viewer.setShapeRenderingProperties (PCL_VISUALIZER_REPRESENTATION,
+                                      PCL_VISUALIZER_REPRESENTATION_WIREFRAME,
+                                      id,
+                                      viewport);
+  viewer.setShapeRenderingProperties (PCL_VISUALIZER_COLOR,
+                                      color.r / 255.0,
+                                      color.g / 255.0,
+                                      color.b / 255.0,
+                                      id,
+                                      viewport);
+  viewer.setShapeRenderingProperties (
+      PCL_VISUALIZER_LINE_WIDTH, kBoxLineWidth, id, viewport);
+  // Unlit, its colour all ambient: every edge in the object's colour exactly, whichever way
+  // its faces turn (PCL's shapes add a diffuse term that brightens it).
+  const auto shape = viewer.getShapeActorMap()->find (id);
+  if (shape != viewer.getShapeActorMap()->end())
+    if (auto* actor = vtkActor::SafeDownCast (shape->second)) {
+      actor->GetProperty()->LightingOff();
+      actor->GetProperty()->SetAmbient (1.0);
+      actor->GetProperty()->SetDiffuse (0.0);
+      actor->GetProperty()->SetSpecular (0.0);
+    }
 }
 
 int

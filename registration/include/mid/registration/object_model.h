@@ -62,6 +62,29 @@ struct ObjectModel
 /** \brief Every object discovered in a frame. */
 using ObjectModels = std::vector<ObjectModel>;
 
+/** \brief The size of the box a model's copies occupy on the support plane (not in the paper):
+  * measured in a frame (ModelSizeMeasurement), kept with the model in its files
+  * (saveObjectModel()), and reported in the results.
+  */
+struct ModelSize
+{
+  /** \brief True if at least the required number of measured instances agree on `size`. */
+  bool valid = false;
+  /** \brief How many measured instances agree on `size` (0 if none is measured). */
+  int agreeing = 0;
+  /** \brief Box edges (metres), ascending. */
+  Eigen::Vector3f size = Eigen::Vector3f::Zero();
+  /** \brief Box frame -> model frame: the box of the instance that gave `size`, in the model
+    * frame (axes along the edges in the order of `size`, origin at its centre).
+    */
+  Eigen::Matrix4f box_in_model = Eigen::Matrix4f::Identity();
+
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+/** \brief One ModelSize per model. */
+using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
+
 /** \brief What is wrong with a model's observations, for the steps that check their input:
   * an instance with unequal numbers of keypoints and landmarks, or an observation of a
   * keypoint outside [0, keypoints) or of a landmark the model does not have.

@@ -63,26 +63,6 @@ private:
 using InstanceExtents =
     std::vector<InstanceExtent, Eigen::aligned_allocator<InstanceExtent>>;
 
-/** \brief The size of the box a model's copies occupy on the support plane (not in the paper). */
-struct ModelSize
-{
-  /** \brief True if at least the required number of measured instances agree on `size`. */
-  bool valid = false;
-  /** \brief How many measured instances agree on `size` (0 if none is measured). */
-  int agreeing = 0;
-  /** \brief Box edges (metres), ascending. */
-  Eigen::Vector3f size = Eigen::Vector3f::Zero();
-  /** \brief Box frame -> model frame: the box of the instance that gave `size`, in the model
-    * frame (axes along the edges in the order of `size`, origin at its centre).
-    */
-  Eigen::Matrix4f box_in_model = Eigen::Matrix4f::Identity();
-
-  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
-};
-
-/** \brief One ModelSize per model. */
-using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
-
 /** \brief The pixels of each instance's keypoints, instance after instance and model after
   * model: the seeds from which their surfaces grow (growInstanceSurfaces()).
   * \param[in] models the models; their observations must index keypoint_pixels (not checked)

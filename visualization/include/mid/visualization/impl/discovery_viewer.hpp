@@ -2,6 +2,7 @@
 
 #include <mid/visualization/camera_view.h>
 #include <mid/visualization/discovery_viewer.h>
+#include <mid/visualization/drawn_boxes.h>
 #include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 
@@ -29,6 +30,18 @@ addModelPanel (pcl::visualization::PCLVisualizer& viewer,
                const ObjectModels& models,
                double left,
                int height);
+
+/** \brief Add a box as its 12 edges, unlit lines of `color` (kBoxLineWidth pixels wide).
+  * \param[in] box_to_camera the box's frame: origin at its centre, axes along its edges
+  * \param[in] size its edges along those axes (metres)
+  */
+void
+addBox (pcl::visualization::PCLVisualizer& viewer,
+        const Eigen::Matrix4f& box_to_camera,
+        const Eigen::Vector3f& size,
+        const ObjectColor& color,
+        const std::string& id,
+        int viewport);
 
 /** \brief A renderer drawn over the viewport (VTK layer 1, same extent and camera), for what
   * must stay visible in front of the scene; its index in the viewer's renderer collection.
@@ -69,6 +82,8 @@ landmarkPointSize (double scale)
 constexpr float kTowardsCamera = 0.01f;
 /** \brief Length of the axes of each coordinate frame (metres). */
 constexpr double kFrameAxes = 0.05;
+/** \brief Width of the lines of the objects' boxes (pixels). */
+constexpr double kBoxLineWidth = 2.0;
 
 } // namespace detail
 
@@ -153,7 +168,9 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
   viewer.setPointCloudRenderingProperties (
       PCL_VISUALIZER_POINT_SIZE, std::max (1.0, std::ceil (scale)), "scene");
 
+  // Frames and boxes (those the overlay draws too) stay visible in front of the scene.
   const int frames_viewport = detail::addOverlayLayer (viewer, viewport);
+  const bool sized = result_.model_sizes.size() == result_.models.size();
   Eigen::Vector3f instances_sum = Eigen::Vector3f::Zero();
   std::size_t instances = 0;
   for (std::size_t m = 0; m < result_.models.size(); ++m) {
@@ -175,6 +192,13 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
                                   Eigen::Affine3f (pose),
                                   "frame_" + suffix,
                                   frames_viewport);
+      if (sized && isBoxDrawn (result_.model_sizes[m]))
+        detail::addBox (viewer,
+                        pose * result_.model_sizes[m].box_in_model,
+                        result_.model_sizes[m].size,
+                        color,
+                        "box_" + suffix,
+                        frames_viewport);
       instances_sum += pose.topRightCorner<3, 1>();
       ++instances;
     }

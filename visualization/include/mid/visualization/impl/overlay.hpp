@@ -1,5 +1,6 @@
 #pragma once
 
+#include <mid/visualization/drawn_boxes.h>
 #include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 #include <mid/visualization/overlay.h>
@@ -39,9 +40,6 @@ drawInstance (const std::vector<cv::Point2f>& pixels,
               const std::string& label,
               cv::Mat& image);
 
-/** \brief Copies that must agree on an object's box for the overlay to draw it. */
-constexpr int kMinDrawnBoxCopies = 2;
-
 /** \brief Draw the 12 edges of a box (edges `size`, frame `box_to_camera`, metres), projected
   * by `intrinsics`, 1 pixel wide; an edge with an end at or behind the camera is left out.
   */
@@ -70,19 +68,16 @@ renderOverlay (const pcl::PointCloud<PointT>& cloud,
     return false;
   }
   cv::Mat drawn = detail::organizedCloudToImage (cloud);
-  // The objects' boxes that two copies or more agree on, under the instances (one copy alone
-  // is often measured joined with a neighbour); a cloud from a depth image gives its camera.
-  const auto agreed = [] (const ModelSize& size) {
-    return size.valid && size.agreeing >= detail::kMinDrawnBoxCopies;
-  };
+  // The objects' boxes that enough copies agree on, under the instances; a cloud from a depth
+  // image gives its camera.
   io::CameraIntrinsics intrinsics;
   const bool boxes =
       result.model_sizes.size() == result.models.size() &&
-      std::any_of (result.model_sizes.begin(), result.model_sizes.end(), agreed) &&
+      std::any_of (result.model_sizes.begin(), result.model_sizes.end(), isBoxDrawn) &&
       estimateIntrinsics (cloud, intrinsics);
   for (std::size_t m = 0; boxes && m < result.models.size(); ++m) {
     const ObjectColor color = objectColor (m);
-    if (agreed (result.model_sizes[m]))
+    if (isBoxDrawn (result.model_sizes[m]))
       for (const auto& instance : result.models[m].instances)
         detail::drawBox (instance.pose * result.model_sizes[m].box_in_model,
                          result.model_sizes[m].size,
