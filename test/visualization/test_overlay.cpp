@@ -2,6 +2,7 @@
 // object's color, and the rest of the image is the scene's color image, untouched; on boxes
 // lying on a table, each object's box is drawn where the true boxes are.
 
+#include "boxes_on_a_table.h"
 #include "rendered_objects_scene.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
@@ -159,42 +160,17 @@ TEST (OverlayWithoutObjects, IsTheColorImage)
 TEST (OverlayBoxes, DrawsEachObjectsBoxOnEveryCopy)
 {
   // Three copies of one box lying apart on a table: the result gives the object's box, agreed
-  // on by all three, and the overlay draws it at each instance's pose. The true boxes' edges, projected by the
-  // cloud's camera, are where the drawn edges are: most of their pixels (the visible and the
-  // hidden edges alike) lie within 3 pixels of one in the object's color.
-  const Eigen::Vector3d size (0.12, 0.09, 0.04);
-  const double z = 0.95 - 0.5 * size.z();
-  const char* print = "bastoncini_cookie_box.png";
-  const auto scene = mid::test::renderBoxes (
-      {{print, size, mid::test::boxPose (-0.16, -0.1, z, 10.0)},
-       {print, size, mid::test::boxPose (0.16, -0.12, z, -35.0)},
-       {print, size, mid::test::boxPose (0.0, 0.12, z, 70.0)}},
-      0.95);
-  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
-  discovery.setInputCloud (scene.cloud);
+  // on by all three, and the overlay draws it at each instance's pose. The true boxes' edges,
+  // projected by the cloud's camera, are where the drawn edges are: most of their pixels (the
+  // visible and the hidden edges alike) lie within 3 pixels of one in the object's color.
+  mid::test::RenderedObjectsScene scene;
   mid::DiscoveryResult result;
-  ASSERT_TRUE (discovery.discover (result));
-  ASSERT_EQ (result.models.size(), 1u);
-  ASSERT_EQ (result.model_sizes.size(), 1u);
-  ASSERT_TRUE (result.model_sizes[0].valid);
+  ASSERT_NO_FATAL_FAILURE (mid::test::discoverBoxesOnATable (scene, result));
   cv::Mat image;
   ASSERT_TRUE (mid::visualization::renderOverlay (*scene.cloud, result, image));
-  mid::io::CameraIntrinsics camera;
-  ASSERT_TRUE (mid::visualization::estimateIntrinsics (*scene.cloud, camera));
-
-  cv::Mat colored (image.size(), CV_8UC1, cv::Scalar (0));
-  const cv::Vec3b color = bgr (mid::visualization::objectColor (0));
-  for (int v = 0; v < image.rows; ++v)
-    for (int u = 0; u < image.cols; ++u)
-      colored.at<uchar> (v, u) = image.at<cv::Vec3b> (v, u) == color ? 255 : 0;
-  cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
-  for (const auto& box : scene.boxes) {
-    std::size_t samples = 0;
-    const double share = mid::test::shareOfBoxEdgesOn (
-        colored, box, camera.fx, camera.fy, camera.cx, camera.cy, &samples);
-    ASSERT_GT (samples, 200u);
+  for (const double share : mid::test::boxOutlinesShown (
+           image, bgr (mid::visualization::objectColor (0)), 0, scene))
     EXPECT_GT (share, 0.8);
-  }
   // Without the boxes in the result no edge is drawn, nor for a box one copy alone gives.
   mid::DiscoveryResult without = result;
   without.model_sizes.clear();

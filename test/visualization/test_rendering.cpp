@@ -3,19 +3,17 @@
 // landmarks, projected with the camera model, appear in their object's color.
 
 #include "app_runner.h"
-#include "rendered_objects_scene.h"
+#include "boxes_on_a_table.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
 #include <mid/discovery/multi_instance_discovery.h>
 #include <mid/io/organized_cloud_io.h>
 #include <mid/visualization/discovery_viewer.h>
-#include <mid/visualization/intrinsics_estimation.h>
 #include <mid/visualization/object_colors.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
@@ -190,19 +188,9 @@ TEST (RenderingBoxes, DrawsEachObjectsBoxOnEveryCopy)
   // of that colour; without the boxes in the result, or with a box one copy alone gives, few
   // do (the landmarks, in that colour too, lie inside the boxes' outlines).
   ASSERT_NE (std::getenv ("DISPLAY"), nullptr) << "run this test under xvfb-run -a";
-  const char* print = "bastoncini_cookie_box.png";
-  const auto scene = mid::test::boxesLyingOnATable ({print, print, print});
-  mid::MultiInstanceDiscovery<pcl::PointXYZRGBA> discovery;
-  discovery.setInputCloud (scene.cloud);
+  mid::test::RenderedObjectsScene scene;
   mid::DiscoveryResult result;
-  ASSERT_TRUE (discovery.discover (result));
-  ASSERT_EQ (result.models.size(), 1u);
-  ASSERT_EQ (result.model_sizes.size(), 1u);
-  ASSERT_TRUE (result.model_sizes[0].valid);
-  ASSERT_GE (result.model_sizes[0].agreeing, 2);
-  mid::io::CameraIntrinsics camera;
-  ASSERT_TRUE (mid::visualization::estimateIntrinsics (*scene.cloud, camera));
-
+  ASSERT_NO_FATAL_FAILURE (mid::test::discoverBoxesOnATable (scene, result));
   const mid::test::TemporaryFolder folder;
   const auto edgesShown = [&] (const mid::DiscoveryResult& shown) {
     mid::visualization::DiscoveryViewer<pcl::PointXYZRGBA> viewer;
@@ -211,18 +199,11 @@ TEST (RenderingBoxes, DrawsEachObjectsBoxOnEveryCopy)
     viewer.setShowModelPanel (false);
     EXPECT_TRUE (
         viewer.saveScreenshot (folder.file ("boxes.png"), kImageWidth, kImageHeight));
-    const cv::Mat image = cv::imread (folder.file ("boxes.png"), cv::IMREAD_COLOR);
-    cv::Mat colored (image.size(), CV_8UC1, cv::Scalar (0));
-    for (int v = 0; v < image.rows; ++v)
-      for (int u = 0; u < image.cols; ++u)
-        colored.at<uchar> (v, u) =
-            similar (image.at<cv::Vec3b> (v, u), objectBgr (0)) ? 255 : 0;
-    cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
-    std::vector<double> shares;
-    for (const auto& box : scene.boxes)
-      shares.push_back (mid::test::shareOfBoxEdgesOn (
-          colored, box, camera.fx, camera.fy, camera.cx, camera.cy));
-    return shares;
+    return mid::test::boxOutlinesShown (
+        cv::imread (folder.file ("boxes.png"), cv::IMREAD_COLOR),
+        objectBgr (0),
+        30,
+        scene);
   };
   for (const double share : edgesShown (result))
     EXPECT_GT (share, 0.8);
