@@ -106,8 +106,7 @@ ResultFiles::write (const DiscoveryResult& result, const std::string& input_name
   for (std::size_t m = 0; !model_prefix_.empty() && m < result.models.size(); ++m)
     if (!saveObjectModel (model_prefix_ + std::to_string (m) + ".json",
                           result.models[m],
-                          m < result.model_sizes.size() ? result.model_sizes[m]
-                                                        : ModelSize(),
+                          modelBox (result, m) ? *modelBox (result, m) : ModelSize(),
                           &files_))
       return false;
   if (!json_path_.empty()) {
@@ -149,8 +148,8 @@ printResult (const pcl::PointCloud<PointT>& cloud,
     print_info (" instances, %zu landmarks, diameter %.3f m",
                 result.models[m].landmarks.size(),
                 static_cast<double> (result.models[m].diameter));
-    if (m < result.model_sizes.size() && result.model_sizes[m].valid) {
-      const ModelSize& box = result.model_sizes[m];
+    if (modelBox (result, m) && modelBox (result, m)->valid) {
+      const ModelSize& box = *modelBox (result, m);
       print_info (", box %.1f x %.1f x %.1f mm (agreed by %d cop%s)",
                   1000.0 * static_cast<double> (box.size.x()),
                   1000.0 * static_cast<double> (box.size.y()),

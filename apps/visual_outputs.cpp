@@ -61,13 +61,15 @@ VisualOutputs::printHelp()
               "needed):\n");
   print_info ("  -overlay FILE.png   the color image with each instance's keypoints, "
               "box and label\n");
-  print_info ("                      in its object's color\n");
+  print_info ("                      in its object's color, and the object's box where "
+              "2+ copies agree\n");
   print_info ("  -screenshot FILE.png  3D view rendered off-screen: scene, model "
               "landmarks at each\n");
-  print_info ("                      instance's pose, 5 cm frames, models on the right "
-              "(needs an X\n");
-  print_info (
-      "                      display: run under xvfb-run -a on a headless machine)\n");
+  print_info ("                      instance's pose, 5 cm frames, the object's box as "
+              "on the overlay,\n");
+  print_info ("                      models on the right (needs an X display: run "
+              "under xvfb-run -a\n");
+  print_info ("                      on a headless machine)\n");
   print_info (
       "  -size W H           screenshot and window size in pixels (default 640 480)\n");
   print_info ("  -viewpoint X Y Z    look from this point (camera frame, metres) at "

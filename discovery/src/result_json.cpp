@@ -34,14 +34,14 @@ writeInstance (std::ostringstream& out,
                const ImageKeypoints& image)
 {
   out << "        {\"pose\": ";
-  writeJsonMatrix (out, instance.pose);
+  detail::writeJsonMatrix (out, instance.pose);
   out << ",\n         \"keypoints\": [";
   float u_min = std::numeric_limits<float>::max(), v_min = u_min;
   float u_max = std::numeric_limits<float>::lowest(), v_max = u_max;
   for (std::size_t o = 0; o < instance.keypoints.size(); ++o) {
     const auto& kp = image[static_cast<std::size_t> (instance.keypoints[o])];
-    out << (o > 0 ? ", " : "") << "[" << jsonNumber (kp.u) << ", " << jsonNumber (kp.v)
-        << "]";
+    out << (o > 0 ? ", " : "") << "[" << detail::jsonNumber (kp.u) << ", "
+        << detail::jsonNumber (kp.v) << "]";
     u_min = std::min (u_min, kp.u);
     v_min = std::min (v_min, kp.v);
     u_max = std::max (u_max, kp.u);
@@ -49,9 +49,10 @@ writeInstance (std::ostringstream& out,
   }
   out << "],\n         \"bbox\": [";
   if (!instance.keypoints.empty())
-    out << jsonNumber (u_min) << ", " << jsonNumber (v_min) << ", "
-        << jsonNumber (u_max) << ", " << jsonNumber (v_max);
-  out << "],\n         \"rms_error\": " << jsonNumber (instance.rms_error) << "}";
+    out << detail::jsonNumber (u_min) << ", " << detail::jsonNumber (v_min) << ", "
+        << detail::jsonNumber (u_max) << ", " << detail::jsonNumber (v_max);
+  out << "],\n         \"rms_error\": " << detail::jsonNumber (instance.rms_error)
+      << "}";
 }
 
 } // namespace
@@ -68,7 +69,7 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
       << ",\n  \"timing_ms\": {";
   for (std::size_t i = 0; i < result.timing_ms.size(); ++i)
     out << (i > 0 ? ", " : "") << quoted (result.timing_ms[i].first) << ": "
-        << jsonNumber (result.timing_ms[i].second);
+        << detail::jsonNumber (result.timing_ms[i].second);
   out << "},\n  \"counts\": {\"keypoints\": "
       << (result.keypoints ? result.keypoints->size() : 0)
       << ", \"matches\": " << result.matches.size()
@@ -80,12 +81,9 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
     const auto& model = result.models[m];
     out << (m > 0 ? "," : "") << "\n    {\"id\": " << m
         << ", \"landmarks\": " << model.landmarks.size()
-        << ", \"diameter\": " << jsonNumber (model.diameter) << ",\n     \"box\": ";
-    writeJsonBox (out,
-                  result.model_sizes.size() == result.models.size()
-                      ? &result.model_sizes[m]
-                      : nullptr,
-                  "\n             ");
+        << ", \"diameter\": " << detail::jsonNumber (model.diameter)
+        << ",\n     \"box\": ";
+    detail::writeJsonBox (out, modelBox (result, m), "\n             ");
     out << ",\n     \"instances\": [\n";
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
       writeInstance (out, model.instances[i], result.image_keypoints);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 namespace mid {
+namespace detail {
 
 std::string
 jsonNumber (double value)
@@ -41,4 +42,5 @@ writeJsonBox (std::ostream& out, const ModelSize* size, const std::string& befor
   out << "}";
 }
 
+} // namespace detail
 } // namespace mid

@@ -11,6 +11,8 @@
 #include <pcl/point_types.h>
 #include <pcl/register_point_struct.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -62,7 +64,7 @@ fail (const std::string& message, ObjectModel& model, ModelSize& box)
   return false;
 }
 
-/** The number stored under `key` in a model file's header; false if there is none. */
+/** The finite number stored under `key` in a model file's header; false if there is none. */
 bool
 findNumber (const nlohmann::json& header, const char* key, double& value)
 {
@@ -70,10 +72,23 @@ findNumber (const nlohmann::json& header, const char* key, double& value)
   if (it == header.end() || !it->is_number())
     return false;
   value = it->get<double>();
+  return std::isfinite (value);
+}
+
+/** The whole number of at least 0 stored under `key`; false if there is none. */
+bool
+findCount (const nlohmann::json& header, const char* key, std::uint64_t& value)
+{
+  const auto it = header.find (key);
+  if (it == header.end() || !it->is_number_unsigned())
+    return false;
+  value = it->get<std::uint64_t>();
   return true;
 }
 
-/** Read `count` numbers of a JSON list into `values`; false if it is no such list. */
+/** Read `count` numbers of a JSON list into `values`; false if it is no such list or a number
+  * is no finite float.
+  */
 bool
 readNumbers (const nlohmann::json& list, std::size_t count, float* values)
 {
@@ -82,14 +97,37 @@ readNumbers (const nlohmann::json& list, std::size_t count, float* values)
   for (std::size_t i = 0; i < count; ++i) {
     if (!list[i].is_number())
       return false;
-    values[i] = list[i].get<float>();
+    const double value = list[i].get<double>();
+    if (!(std::abs (value) <= static_cast<double> (std::numeric_limits<float>::max())))
+      return false;
+    values[i] = static_cast<float> (value);
   }
   return true;
 }
 
-/** The box in a model file's header (writeJsonBox()): not valid when it is absent or null.
-  * \return the problem in words when it is malformed or no box (edges not positive and
-  * ascending, copies not at least 1, the pose no rigid transform); empty otherwise
+/** What is wrong with a box that claims to be valid, in words: its edges are not positive,
+  * finite and ascending, fewer than one copy agrees, or its pose is no rigid transform (a
+  * rotation within 1e-3, not a mirror, and the last row 0 0 0 1). Empty if nothing is; the
+  * writer and the reader ask the same.
+  */
+std::string
+boxProblem (const ModelSize& box)
+{
+  const Eigen::Matrix3f rotation = box.box_in_model.topLeftCorner<3, 3>();
+  if (!box.size.allFinite() || !(box.size.x() > 0.0f) || box.size.x() > box.size.y() ||
+      box.size.y() > box.size.z() || box.agreeing < 1 ||
+      !box.box_in_model.allFinite() ||
+      box.box_in_model.row (3) != Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) ||
+      !(rotation.transpose() * rotation).isIdentity (1e-3f) ||
+      !(rotation.determinant() > 0.0f))
+    return "its \"box\" is not 3 positive ascending edges, a number of copies of at "
+           "least 1 "
+           "and a 4x4 rigid pose";
+  return "";
+}
+
+/** The box in a model file's header (detail::writeJsonBox()): not valid when it is absent or null.
+  * \return the problem in words when it is malformed or no box (boxProblem()); empty otherwise
   */
 std::string
 readBox (const nlohmann::json& header, ModelSize& box)
@@ -98,31 +136,26 @@ readBox (const nlohmann::json& header, ModelSize& box)
   const auto it = header.find ("box");
   if (it == header.end() || it->is_null())
     return "";
-  std::string problem = "its \"box\" is not 3 positive ascending edges, a number of "
-                        "copies of at least 1 and a 4x4 rigid pose";
-  if (!it->is_object() || !it->contains ("size") || !it->contains ("copies") ||
-      !it->contains ("pose") || !it->at ("copies").is_number_integer() ||
-      !readNumbers (it->at ("size"), 3, box.size.data()) ||
-      !it->at ("pose").is_array() || it->at ("pose").size() != 4)
-    return problem;
   Eigen::Matrix<float, 4, 4, Eigen::RowMajor> pose;
-  for (std::size_t r = 0; r < 4; ++r)
-    if (!readNumbers (
-            it->at ("pose")[r], 4, pose.row (static_cast<Eigen::Index> (r)).data()))
-      return problem;
-  const long long copies = it->at ("copies").get<long long>();
-  const Eigen::Matrix3f rotation = pose.topLeftCorner<3, 3>();
-  if (!box.size.allFinite() || !(box.size.x() > 0.0f) || box.size.x() > box.size.y() ||
-      box.size.y() > box.size.z() || copies < 1 ||
-      copies > std::numeric_limits<int>::max() || !pose.allFinite() ||
-      pose.row (3) != Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) ||
-      !(rotation.transpose() * rotation).isIdentity (1e-3f) ||
-      !(rotation.determinant() > 0.0f))
-    return problem;
-  box.box_in_model = pose;
-  box.agreeing = static_cast<int> (copies);
-  box.valid = true;
-  return "";
+  bool read = it->is_object() && it->contains ("size") && it->contains ("copies") &&
+              it->contains ("pose") && it->at ("copies").is_number_unsigned() &&
+              readNumbers (it->at ("size"), 3, box.size.data()) &&
+              it->at ("pose").is_array() && it->at ("pose").size() == 4;
+  for (std::size_t r = 0; read && r < 4; ++r)
+    read = readNumbers (
+        it->at ("pose")[r], 4, pose.row (static_cast<Eigen::Index> (r)).data());
+  if (read) {
+    const auto copies = it->at ("copies").get<std::uint64_t>();
+    box.agreeing = static_cast<int> (
+        std::min<std::uint64_t> (copies, std::numeric_limits<int>::max()));
+    box.box_in_model = pose;
+  }
+  std::string problem = read ? boxProblem (box) : boxProblem (ModelSize());
+  if (problem.empty())
+    box.valid = true;
+  else
+    box = ModelSize();
+  return problem;
 }
 
 } // namespace
@@ -143,6 +176,12 @@ saveObjectModel (const std::string& path,
 {
   if (std::filesystem::path (path).extension() != ".json") {
     PCL_ERROR ("[mid::saveObjectModel] '%s' must end in .json\n", path.c_str());
+    return false;
+  }
+  if (box.valid && !boxProblem (box).empty()) {
+    PCL_ERROR ("[mid::saveObjectModel] not writing '%s': %s\n",
+               path.c_str(),
+               boxProblem (box).c_str());
     return false;
   }
   pcl::PointCloud<ModelFilePoint> rows;
@@ -170,8 +209,9 @@ saveObjectModel (const std::string& path,
        << std::filesystem::path (dataPathOf (path)).filename().string()
        << "\",\n  \"landmarks\": " << model.landmarks.size()
        << ",\n  \"descriptors\": " << model.descriptors.size()
-       << ",\n  \"diameter\": " << jsonNumber (model.diameter) << ",\n  \"box\": ";
-  writeJsonBox (json, &box, "\n          ");
+       << ",\n  \"diameter\": " << detail::jsonNumber (model.diameter)
+       << ",\n  \"box\": ";
+  detail::writeJsonBox (json, &box, "\n          ");
   json << "\n}\n";
   json.close();
   if (!json || rows.empty() ||
@@ -211,20 +251,28 @@ loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box)
                      R"("mid-object-model"; truncated?))",
                  model,
                  box);
-  double version = 0.0, landmarks = 0.0, descriptors = 0.0, diameter = 0.0;
-  if (!findNumber (header, "version", version))
-    return fail ("'" + path + "' has no version", model, box);
-  if (static_cast<int> (version) != OBJECT_MODEL_FILE_VERSION)
+  std::uint64_t version = 0, landmarks = 0, descriptors = 0;
+  double diameter = 0.0;
+  if (!findCount (header, "version", version))
+    return fail ("'" + path + "' has no version (a whole number)", model, box);
+  if (version != static_cast<std::uint64_t> (OBJECT_MODEL_FILE_VERSION))
     return fail ("'" + path + "' is a model file of version " +
-                     std::to_string (static_cast<int> (version)) +
-                     "; this build reads version " +
+                     std::to_string (version) + "; this build reads version " +
                      std::to_string (OBJECT_MODEL_FILE_VERSION),
                  model,
                  box);
-  if (!findNumber (header, "landmarks", landmarks) ||
-      !findNumber (header, "descriptors", descriptors) ||
-      !findNumber (header, "diameter", diameter))
-    return fail ("'" + path + "' lacks landmarks, descriptors or diameter", model, box);
+  // Every landmark has a descriptor or more, so the data's rows bound both counts.
+  if (!findCount (header, "landmarks", landmarks) ||
+      !findCount (header, "descriptors", descriptors) ||
+      !findNumber (header, "diameter", diameter) || landmarks < 1 ||
+      landmarks > descriptors || !(diameter >= 0.0) ||
+      diameter > static_cast<double> (std::numeric_limits<float>::max()))
+    return fail (
+        "'" + path +
+            "' lacks landmarks (at least 1), descriptors (at least as many) or "
+            "a diameter (at least 0)",
+        model,
+        box);
   const std::string box_problem = readBox (header, box);
   if (!box_problem.empty())
     return fail ("'" + path + "': " + box_problem, model, box);
@@ -256,10 +304,9 @@ loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box)
     return fail (
         "'" + data_path + "' could not be converted (out of memory)", model, box);
   }
-  if (rows.size() != static_cast<std::size_t> (descriptors) || landmarks < 1.0)
+  if (rows.size() != descriptors)
     return fail ("'" + data_path + "' holds " + std::to_string (rows.size()) +
-                     " descriptors, the header says " +
-                     std::to_string (static_cast<long> (descriptors)) +
+                     " descriptors, the header says " + std::to_string (descriptors) +
                      " (truncated or inconsistent)",
                  model,
                  box);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -174,6 +175,12 @@ TEST_F (ObjectModelIO, RefusesAMalformedBox)
        R"("pose": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"},
       {R"("pose": \[\[.*\]\])",
        R"("pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]])"},
+      {R"("pose": \[\[.*\]\])",
+       R"("pose": [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"},
+      {R"("pose": \[\[.*\]\])", R"("pose": [1, 2, 3, 4])"},
+      {R"("size": \[[^\]]*\])", R"("size": [1e300, 2e300, 3e300])"},
+      {R"("size": \[[^\]]*\])", R"("size": ["0.04", 0.09, 0.12])"},
+      {R"("copies": 3)", R"("copies": 3.0)"},
       {R"("box": \{)", R"("box": "large", "old": {)"}};
   for (const auto& [from, to] : rewrites) {
     ASSERT_TRUE (mid::saveObjectModel (path_, randomModel(), someBox()));
@@ -181,6 +188,47 @@ TEST_F (ObjectModelIO, RefusesAMalformedBox)
     SCOPED_TRACE (to);
     expectRefused();
   }
+}
+
+TEST_F (ObjectModelIO, RefusesCountsThatAreNoCounts)
+{
+  // Counts that would make the reader allocate without bound, or cast out of range.
+  const std::vector<std::pair<std::string, std::string>> rewrites = {
+      {R"("landmarks": [0-9]+)", R"("landmarks": 1000000000000000000)"},
+      {R"("landmarks": [0-9]+)", R"("landmarks": 1e30)"},
+      {R"("landmarks": [0-9]+)", R"("landmarks": 0)"},
+      {R"("descriptors": [0-9]+)", R"("descriptors": -20)"},
+      {R"("version": 1)", R"("version": 1.9)"},
+      {R"("version": 1)", R"("version": 1e300)"},
+      {R"("diameter": [0-9.e-]+)", R"("diameter": -0.1)"},
+      {R"("diameter": [0-9.e-]+)", R"("diameter": 1e300)"}};
+  for (const auto& [from, to] : rewrites) {
+    ASSERT_TRUE (mid::saveObjectModel (path_, randomModel()));
+    rewriteJson (from, to);
+    SCOPED_TRACE (to);
+    expectRefused();
+  }
+}
+
+TEST (ObjectModelIOWrite, RefusesABoxItsReaderWouldRefuse)
+{
+  const mid::test::TemporaryFolder folder;
+  mid::ModelSize mirrored = someBox(), unsorted = someBox(), no_copy = someBox(),
+                 not_finite = someBox();
+  mirrored.box_in_model.col (0) *= -1.0f;
+  unsorted.size = Eigen::Vector3f (0.1f, 0.05f, 0.2f);
+  no_copy.agreeing = 0;
+  not_finite.size.z() = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& box : {mirrored, unsorted, no_copy, not_finite}) {
+    EXPECT_FALSE (
+        mid::saveObjectModel (folder.file ("model.json"), randomModel(), box));
+    EXPECT_EQ (folder.entries(), 0u);
+  }
+  // The same boxes not valid are written as none.
+  mid::ModelSize unsure = mirrored;
+  unsure.valid = false;
+  EXPECT_TRUE (
+      mid::saveObjectModel (folder.file ("model.json"), randomModel(), unsure));
 }
 
 TEST_F (ObjectModelIO, RefusesMissingFiles)

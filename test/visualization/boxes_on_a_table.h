@@ -38,7 +38,7 @@ discoverBoxesOnATable (RenderedObjectsScene& scene, DiscoveryResult& result)
 /** \brief Per true box of the scene, the share of the points along its projected edges that lie
   * within 3 pixels of a pixel of `color` in `image` (BGR; a pixel whose channels differ from it
   * by `tolerance` or less in sum counts), the picture drawn through the scene's camera at the
-  * image's size.
+  * image's size. Expects each box's edges to lie in the image (200 points or more).
   */
 inline std::vector<double>
 boxOutlinesShown (const cv::Mat& image,
@@ -59,9 +59,12 @@ boxOutlinesShown (const cv::Mat& image,
     }
   cv::dilate (colored, colored, cv::Mat::ones (7, 7, CV_8UC1));
   std::vector<double> shares;
-  for (const auto& box : scene.boxes)
-    shares.push_back (
-        shareOfBoxEdgesOn (colored, box, camera.fx, camera.fy, camera.cx, camera.cy));
+  for (const auto& box : scene.boxes) {
+    std::size_t samples = 0;
+    shares.push_back (shareOfBoxEdgesOn (
+        colored, box, camera.fx, camera.fy, camera.cx, camera.cy, &samples));
+    EXPECT_GT (samples, 200u); // the box is in the picture, whatever it shows
+  }
   return shares;
 }
 

@@ -199,11 +199,9 @@ TEST (RenderingBoxes, DrawsEachObjectsBoxOnEveryCopy)
     viewer.setShowModelPanel (false);
     EXPECT_TRUE (
         viewer.saveScreenshot (folder.file ("boxes.png"), kImageWidth, kImageHeight));
-    return mid::test::boxOutlinesShown (
-        cv::imread (folder.file ("boxes.png"), cv::IMREAD_COLOR),
-        objectBgr (0),
-        30,
-        scene);
+    const cv::Mat image = cv::imread (folder.file ("boxes.png"), cv::IMREAD_COLOR);
+    expectNotBlank (image);
+    return mid::test::boxOutlinesShown (image, objectBgr (0), 30, scene);
   };
   for (const double share : edgesShown (result))
     EXPECT_GT (share, 0.8);

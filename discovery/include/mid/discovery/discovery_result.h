@@ -53,4 +53,16 @@ struct DiscoveryResult
   std::vector<std::pair<std::string, double>> timing_ms;
 };
 
+/** \brief The box of a result's model `m` (DiscoveryResult::model_sizes), or nullptr when the
+  * result holds no boxes (not one per model) or there is no model `m`: the one rule of every
+  * output that writes or draws the boxes (result and model files, overlay, 3D view).
+  */
+inline const ModelSize*
+modelBox (const DiscoveryResult& result, std::size_t m)
+{
+  return result.model_sizes.size() == result.models.size() && m < result.models.size()
+             ? &result.model_sizes[m]
+             : nullptr;
+}
+
 } // namespace mid

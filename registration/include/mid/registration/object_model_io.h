@@ -24,7 +24,9 @@ constexpr int OBJECT_MODEL_FILE_VERSION = 1;
   * as the result files write it (`{"size", "copies", "pose"}`), or `null` when it is not valid
   * \param[in,out] staged if given, the two files are only staged in it (written under their
   * temporary names) and the caller commits them together with its other outputs
-  * \return false (with a PCL_ERROR) if a file cannot be written
+  * \return false (with a PCL_ERROR) if a file cannot be written, or `box` is valid but no box
+  * (edges not positive and ascending, no copy, the pose not rigid), which loadObjectModel()
+  * would refuse
   */
 bool
 saveObjectModel (const std::string& path,
@@ -49,8 +51,8 @@ saveObjectModel (const std::string& path,
 bool
 loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box);
 
-/** \brief Read a model written by saveObjectModel(), without its box; see the overload
-  * above.
+/** \brief Read a model written by saveObjectModel() without returning its box; a malformed
+  * box is refused all the same. See the overload above.
   */
 bool
 loadObjectModel (const std::string& path, ObjectModel& model);

@@ -170,7 +170,6 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
 
   // Frames and boxes (those the overlay draws too) stay visible in front of the scene.
   const int frames_viewport = detail::addOverlayLayer (viewer, viewport);
-  const bool sized = result_.model_sizes.size() == result_.models.size();
   Eigen::Vector3f instances_sum = Eigen::Vector3f::Zero();
   std::size_t instances = 0;
   for (std::size_t m = 0; m < result_.models.size(); ++m) {
@@ -192,10 +191,10 @@ DiscoveryViewer<PointT>::populateScene (pcl::visualization::PCLVisualizer& viewe
                                   Eigen::Affine3f (pose),
                                   "frame_" + suffix,
                                   frames_viewport);
-      if (sized && isBoxDrawn (result_.model_sizes[m]))
+      if (const ModelSize* box = modelBox (result_, m); box && isBoxDrawn (*box))
         detail::addBox (viewer,
-                        pose * result_.model_sizes[m].box_in_model,
-                        result_.model_sizes[m].size,
+                        pose * box->box_in_model,
+                        box->size,
                         color,
                         "box_" + suffix,
                         frames_viewport);

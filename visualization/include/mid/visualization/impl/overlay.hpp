@@ -71,16 +71,17 @@ renderOverlay (const pcl::PointCloud<PointT>& cloud,
   // The objects' boxes that enough copies agree on, under the instances; a cloud from a depth
   // image gives its camera.
   io::CameraIntrinsics intrinsics;
-  const bool boxes =
-      result.model_sizes.size() == result.models.size() &&
-      std::any_of (result.model_sizes.begin(), result.model_sizes.end(), isBoxDrawn) &&
-      estimateIntrinsics (cloud, intrinsics);
+  bool boxes = false;
+  for (std::size_t m = 0; m < result.models.size(); ++m)
+    boxes = boxes || (modelBox (result, m) && isBoxDrawn (*modelBox (result, m)));
+  boxes = boxes && estimateIntrinsics (cloud, intrinsics);
   for (std::size_t m = 0; boxes && m < result.models.size(); ++m) {
     const ObjectColor color = objectColor (m);
-    if (isBoxDrawn (result.model_sizes[m]))
+    const ModelSize* box = modelBox (result, m);
+    if (box && isBoxDrawn (*box))
       for (const auto& instance : result.models[m].instances)
-        detail::drawBox (instance.pose * result.model_sizes[m].box_in_model,
-                         result.model_sizes[m].size,
+        detail::drawBox (instance.pose * box->box_in_model,
+                         box->size,
                          intrinsics,
                          cv::Scalar (color.b, color.g, color.r),
                          drawn);
