@@ -51,7 +51,7 @@ boxOutlinesShown (const cv::Mat& image,
   cv::Mat colored (image.size(), CV_8UC1, cv::Scalar (0));
   for (int v = 0; v < image.rows; ++v)
     for (int u = 0; u < image.cols; ++u) {
-      const cv::Vec3b& pixel = image.at<cv::Vec3b> (v, u);
+      const auto& pixel = image.at<cv::Vec3b> (v, u);
       const int difference = std::abs (pixel[0] - color[0]) +
                              std::abs (pixel[1] - color[1]) +
                              std::abs (pixel[2] - color[2]);
