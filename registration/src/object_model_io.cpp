@@ -105,37 +105,38 @@ readNumbers (const nlohmann::json& list, std::size_t count, float* values)
   return true;
 }
 
-/** What is wrong with a box that claims to be valid, in words: its edges are not positive,
-  * finite and ascending, fewer than one copy agrees, or its pose is no rigid transform (a
-  * rotation within 1e-3, not a mirror, and the last row 0 0 0 1). Empty if nothing is; the
-  * writer and the reader ask the same.
+/** What a box in a model file must be, in words: isBox(). */
+const char* const kBoxRule =
+    "a \"box\" is 3 positive ascending edges, a number of copies of "
+    "at least 1 and a 4x4 rigid pose";
+
+/** Whether a box that claims to be valid is one: its edges positive, finite and ascending, one
+  * copy or more agreeing, its pose rigid (a rotation within 1e-3, not a mirror, the last row
+  * 0 0 0 1). The writer and the reader ask the same.
   */
-std::string
-boxProblem (const ModelSize& box)
+bool
+isBox (const ModelSize& box)
 {
   const Eigen::Matrix3f rotation = box.box_in_model.topLeftCorner<3, 3>();
-  if (!box.size.allFinite() || !(box.size.x() > 0.0f) || box.size.x() > box.size.y() ||
-      box.size.y() > box.size.z() || box.agreeing < 1 ||
-      !box.box_in_model.allFinite() ||
-      box.box_in_model.row (3) != Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) ||
-      !(rotation.transpose() * rotation).isIdentity (1e-3f) ||
-      !(rotation.determinant() > 0.0f))
-    return "its \"box\" is not 3 positive ascending edges, a number of copies of at "
-           "least 1 "
-           "and a 4x4 rigid pose";
-  return "";
+  return box.size.allFinite() && box.size.x() > 0.0f && box.size.x() <= box.size.y() &&
+         box.size.y() <= box.size.z() && box.agreeing >= 1 &&
+         box.box_in_model.allFinite() &&
+         box.box_in_model.row (3) == Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) &&
+         (rotation.transpose() * rotation).isIdentity (1e-3f) &&
+         rotation.determinant() > 0.0f;
 }
 
-/** The box in a model file's header (detail::writeJsonBox()): not valid when it is absent or null.
-  * \return the problem in words when it is malformed or no box (boxProblem()); empty otherwise
+/** The box in a model file's header (detail::writeJsonBox()): not valid when it is absent or
+  * null.
+  * \return false (box not valid) if it is malformed or no box (isBox())
   */
-std::string
+bool
 readBox (const nlohmann::json& header, ModelSize& box)
 {
   box = ModelSize();
   const auto it = header.find ("box");
   if (it == header.end() || it->is_null())
-    return "";
+    return true;
   Eigen::Matrix<float, 4, 4, Eigen::RowMajor> pose;
   bool read = it->is_object() && it->contains ("size") && it->contains ("copies") &&
               it->contains ("pose") && it->at ("copies").is_number_unsigned() &&
@@ -150,12 +151,12 @@ readBox (const nlohmann::json& header, ModelSize& box)
         std::min<std::uint64_t> (copies, std::numeric_limits<int>::max()));
     box.box_in_model = pose;
   }
-  std::string problem = read ? boxProblem (box) : boxProblem (ModelSize());
-  if (problem.empty())
-    box.valid = true;
-  else
+  if (!read || !isBox (box)) {
     box = ModelSize();
-  return problem;
+    return false;
+  }
+  box.valid = true;
+  return true;
 }
 
 } // namespace
@@ -178,10 +179,10 @@ saveObjectModel (const std::string& path,
     PCL_ERROR ("[mid::saveObjectModel] '%s' must end in .json\n", path.c_str());
     return false;
   }
-  if (box.valid && !boxProblem (box).empty()) {
-    PCL_ERROR ("[mid::saveObjectModel] not writing '%s': %s\n",
+  if (box.valid && !isBox (box)) {
+    PCL_ERROR ("[mid::saveObjectModel] not writing '%s': its box is no box (%s)\n",
                path.c_str(),
-               boxProblem (box).c_str());
+               kBoxRule);
     return false;
   }
   pcl::PointCloud<ModelFilePoint> rows;
@@ -273,9 +274,8 @@ loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box)
             "a diameter (at least 0)",
         model,
         box);
-  const std::string box_problem = readBox (header, box);
-  if (!box_problem.empty())
-    return fail ("'" + path + "': " + box_problem, model, box);
+  if (!readBox (header, box))
+    return fail ("'" + path + "' has a malformed box (" + kBoxRule + ")", model, box);
   const std::string data_path = dataPathOf (path);
   pcl::PointCloud<ModelFilePoint> rows;
   pcl::PCLPointCloud2 blob;
