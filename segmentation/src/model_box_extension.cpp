@@ -59,6 +59,10 @@ ModelBoxExtender::extend (ObjectModels& models, ModelExtension& extension) const
     problem = "the descriptors are not one per keypoint";
   if (problem.empty() && !(margin_ >= 0.0f && std::isfinite (margin_)))
     problem = "the margin must be >= 0 (" + std::to_string (margin_) + ")";
+  if (problem.empty() && !known_sizes_.empty() && known_sizes_.size() != models.size())
+    problem = "the known sizes are not one per model (" +
+              std::to_string (known_sizes_.size()) + " for " +
+              std::to_string (models.size()) + " models)";
   if (!problem.empty()) {
     PCL_ERROR ("[mid::ModelBoxExtender::extend] %s.\n", problem.c_str());
     return false;
@@ -69,8 +73,8 @@ ModelBoxExtender::extend (ObjectModels& models, ModelExtension& extension) const
   Eigen::Vector4f plane;
   if (models.empty() || !fitPlane (plane))
     return true;
-  ModelSizes sizes;
-  if (!measureSizes (models, plane, sizes)) {
+  ModelSizes sizes = known_sizes_;
+  if (sizes.empty() && !measureSizes (models, plane, sizes)) {
     extension = ModelExtension();
     return false;
   }

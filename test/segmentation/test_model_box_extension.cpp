@@ -264,6 +264,68 @@ TEST (ModelBoxExtender, LetsTheGuidedSearchFindACopyShowingWhatTheModelLacks)
   EXPECT_LT (shift.norm(), 0.003);
 }
 
+TEST (ModelBoxExtender, ExtendsWithinAKnownBoxInsteadOfMeasuring)
+{
+  // Known for the model: the half y >= 0 of the true box (in the model frame, the boxes' own),
+  // edges ascending: box x, y, z along model z, y, -x. The frame measures the whole box; the
+  // extension must keep to the known half.
+  const Boxes scene (fourBoxes());
+  const mid::ObjectModel original = halfModel (scene, {0, 1});
+  mid::ModelSize half;
+  half.valid = true;
+  half.agreeing = 2;
+  half.size = Eigen::Vector3f (0.04f, 0.045f, 0.12f);
+  half.box_in_model.topLeftCorner<3, 3>() << 0, 0, -1, 0, 1, 0, 1, 0, 0;
+  half.box_in_model.topRightCorner<3, 1>() = Eigen::Vector3f (0.0f, 0.0225f, 0.0f);
+  mid::ModelBoxExtender known = extenderFor (scene);
+  known.setKnownSizes ({half});
+  mid::ObjectModels models = {original};
+  mid::ModelExtension extension;
+  ASSERT_TRUE (known.extend (models, extension));
+  const float margin = known.getMargin();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const int b = static_cast<int> (i);
+    const Eigen::Isometry3d to_box = scene.scene.boxes[i].pose.inverse();
+    const auto& instance = models[0].instances[i];
+    const std::set<pcl::index_t> added (
+        instance.keypoints.begin() +
+            static_cast<std::ptrdiff_t> (original.instances[i].keypoints.size()),
+        instance.keypoints.end());
+    std::size_t inside = 0, outside = 0;
+    for (const auto k : halfOf (scene, b, false)) {
+      const auto& point = (*scene.keypoints)[static_cast<std::size_t> (k)];
+      const double y = (to_box * point.getVector3fMap().cast<double>()).y();
+      if (y < -margin - 1e-3) {
+        EXPECT_EQ (added.count (k), 0u) << "box " << b << ", keypoint " << k;
+        ++outside;
+      }
+      else if (y > margin && aboveTable (point) > 0.012) {
+        EXPECT_EQ (added.count (k), 1u) << "box " << b << ", keypoint " << k;
+        ++inside;
+      }
+    }
+    EXPECT_EQ (added.size(),
+               instance.keypoints.size() - original.instances[i].keypoints.size());
+    EXPECT_GE (inside, 4u) << "box " << b;
+    EXPECT_GE (outside, 4u) << "box " << b << ": the measured box would add these";
+  }
+  // Measured in the frame, the box adds keypoints of the half y < 0 too.
+  mid::ObjectModels measured = {original};
+  ASSERT_TRUE (extenderFor (scene).extend (measured, extension));
+  EXPECT_GT (measured[0].landmarks.size(), models[0].landmarks.size());
+
+  // A known box that is not valid leaves the model as it is, although the frame would measure
+  // one; known sizes that are not one per model are refused.
+  half.valid = false;
+  known.setKnownSizes ({half});
+  models = {original};
+  ASSERT_TRUE (known.extend (models, extension));
+  EXPECT_EQ (models[0].landmarks.size(), original.landmarks.size());
+  known.setKnownSizes ({half, half});
+  EXPECT_FALSE (known.extend (models, extension));
+  EXPECT_TRUE (extension.observations.empty());
+}
+
 TEST (ModelBoxExtender, LeavesTheModelsWithoutASupportPlaneOrASize)
 {
   const Boxes scene (fourBoxes());

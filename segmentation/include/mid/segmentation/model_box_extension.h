@@ -38,7 +38,8 @@ struct ModelExtension
   * object instead. This step:
   *
   * 1. measures each model's size on the support plane (measureModelSizes(): the box most of
-  *    its measured instances agree on, with its frame in the model frame);
+  *    its measured instances agree on, with its frame in the model frame), or takes the one
+  *    known for it (setKnownSizes());
   * 2. places that box, grown by the margin, at each instance's pose;
   * 3. gives every keypoint that no instance of any model observes, that lies in such a box and
   *    off the table (farther than the plane tolerance from the support plane), to the instance
@@ -88,13 +89,34 @@ public:
   }
   ///@}
 
+  /** \brief The box each model is known to occupy (one per model, in the order of the models
+    * given to extend(), e.g. loaded with its file by loadObjectModel()), placed instead of
+    * measuring the models' sizes in the frame: a model detected in a new frame, where its
+    * copies are too few or too hidden to measure, is extended within the box its discovery
+    * frame measured. A box that is not valid leaves its model as it is. Empty (default):
+    * measure the sizes in the frame.
+    */
+  ///@{
+  void
+  setKnownSizes (const ModelSizes& sizes)
+  {
+    known_sizes_ = sizes;
+  }
+  const ModelSizes&
+  getKnownSizes () const
+  {
+    return known_sizes_;
+  }
+  ///@}
+
   /** \brief Extend the models by the keypoints their copies show inside their boxes.
     * \param[in,out] models the frame's models; landmarks, descriptors and observations are
     * appended and the diameters updated (the instances' rms_error is not). Without a support
     * plane nothing changes.
     * \param[out] extension what was added, for retractModelExtension(); one entry per model
     * \return false (with a PCL_ERROR, models unchanged, extension empty) on missing or
-    * inconsistent input, a parameter out of range, or an observation outside the keypoints
+    * inconsistent input, a parameter out of range, an observation outside the keypoints, or
+    * known sizes (setKnownSizes()) that are not one per model
     */
   bool
   extend (ObjectModels& models, ModelExtension& extension) const;
@@ -102,6 +124,7 @@ public:
 private:
   SIFTDescriptorCloud::ConstPtr descriptors_;
   float margin_ = 0.005f;
+  ModelSizes known_sizes_;
 };
 
 /** \brief Take out of the models what ModelBoxExtender::extend() added: the added observations
