@@ -96,8 +96,7 @@ ResultFiles::stage (const std::string& json_path, const std::string& model_prefi
   if (!json_path.empty() && (json_temporary_ = files_.stage (json_path)).empty())
     return false;
   // The model files are staged when written; check their folder now.
-  return model_prefix.empty() ||
-         !io::StagedFiles().stage (model_prefix + "0.json").empty();
+  return model_prefix.empty() || canStage (model_prefix + "0.json");
 }
 
 bool

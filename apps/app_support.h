@@ -8,6 +8,7 @@
 #include <mid/discovery/discovery_result.h>
 #include <mid/io/camera_intrinsics.h>
 #include <mid/io/staged_files.h>
+#include <mid/registration/object_model_io.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -71,6 +72,24 @@ public:
   stageFile (const std::string& path)
   {
     return files_.stage (path);
+  }
+
+  /** \brief Save a model (saveObjectModel()) under temporary names, committed by write() with
+    * the other outputs; false after a one-line error.
+    */
+  bool
+  saveModel (const std::string& path, const ObjectModel& model, const ModelSize& box)
+  {
+    return saveObjectModel (path, model, box, &files_);
+  }
+
+  /** \brief Whether a file can be written at `path` (its folder exists and is writable);
+    * false after a one-line error.
+    */
+  static bool
+  canStage (const std::string& path)
+  {
+    return !io::StagedFiles().stage (path).empty();
   }
 
   /** \brief Write and commit everything; false after a one-line error. */

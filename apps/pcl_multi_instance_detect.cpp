@@ -7,7 +7,9 @@
 #include <mid/features/sift_keypoint_extractor.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/object_model_io.h>
+#include <mid/segmentation/model_box_extension.h>
 
+#include <pcl/common/io.h>
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
@@ -28,6 +30,7 @@ struct Options
   std::string model_path;
   mid::apps::SceneInput scene;
   std::string json_path;
+  std::string extend_path;
   mid::apps::VisualOutputs pictures;
   float max_descriptor_distance = 350.0f;
   float inlier_threshold = 0.005f;
@@ -53,6 +56,10 @@ printHelp (const char* program)
   mid::apps::printSceneInputHelp();
   print_info ("Output:\n  -json FILE          write the result as JSON (same format as "
               "discovery)\n");
+  print_info (
+      "  -extend FILE.json   write the model extended by the keypoints each detected "
+      "instance\n                      shows inside the object's box (the model "
+      "file must hold one)\n");
   mid::apps::VisualOutputs::printHelp();
   print_info ("Parameters:\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
@@ -80,6 +87,7 @@ printHelp (const char* program)
 /** The options of this app besides the scene and picture options, with their value counts. */
 const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-json", 1},
+                                      {"-extend", 1},
                                       {"-max_desc_dist", 1},
                                       {"-inlier", 1},
                                       {"-min_inliers", 1},
@@ -92,11 +100,11 @@ bool
 parseOptions (int argc, char** argv, Options& options)
 {
   using pcl::console::parse_argument;
-  // The model: the one .json argument that is not the value of -json.
+  // The model: the one .json argument that is not the value of -json or -extend.
   std::vector<std::string> models;
   for (int i = 1; i < argc; ++i)
     if (mid::apps::endsWithIgnoringCase (argv[i], ".json") &&
-        std::string (argv[i - 1]) != "-json")
+        std::string (argv[i - 1]) != "-json" && std::string (argv[i - 1]) != "-extend")
       models.emplace_back (argv[i]);
   if (models.size() != 1) {
     print_error ("Give exactly one model file MODEL.json (got %zu).\n", models.size());
@@ -112,6 +120,13 @@ parseOptions (int argc, char** argv, Options& options)
       !options.pictures.parse (argc, argv))
     return false;
   parse_argument (argc, argv, "-json", options.json_path);
+  parse_argument (argc, argv, "-extend", options.extend_path);
+  if (!options.extend_path.empty() &&
+      !mid::apps::endsWithIgnoringCase (options.extend_path, ".json")) {
+    print_error ("The extended model's file must end in .json (got '%s').\n",
+                 options.extend_path.c_str());
+    return false;
+  }
   using mid::apps::parseNumber;
   if (!parseNumber (argc, argv, "-max_desc_dist", options.max_descriptor_distance) ||
       !parseNumber (argc, argv, "-inlier", options.inlier_threshold) ||
@@ -131,6 +146,42 @@ parseOptions (int argc, char** argv, Options& options)
                  static_cast<double> (options.min_inlier_spread));
     return false;
   }
+  return true;
+}
+
+/** The model extended by the keypoints each detected instance (the model's instances) shows
+  * inside the object's box, placed at the instance (ModelBoxExtender, with the box known from
+  * the model file); prints what was added. False after a one-line error.
+  */
+bool
+extendModel (const pcl::PointCloud<PointT>& cloud,
+             const mid::DiscoveryResult& result,
+             const mid::ModelSize& box,
+             mid::ObjectModel& model)
+{
+  auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud (cloud, *organized);
+  mid::KeypointSurface surface;
+  surface.organized = organized;
+  for (const auto& k : result.image_keypoints)
+    surface.keypoint_pixels.push_back (k.pixel_index);
+  mid::ModelBoxExtender extender;
+  extender.setInputKeypoints (result.keypoints);
+  extender.setKeypointSurface (surface);
+  extender.setInputDescriptors (result.descriptors);
+  extender.setKnownSizes ({box});
+  mid::ObjectModels models{model};
+  mid::ModelExtension extension;
+  if (!extender.extend (models, extension)) {
+    print_error ("Could not extend the model (see the message above).\n");
+    return false;
+  }
+  print_info ("extended:  ");
+  print_value ("%zu", models[0].landmarks.size() - model.landmarks.size());
+  print_info (" landmarks added from %zu instances (%zu in all)\n",
+              model.instances.size(),
+              models[0].landmarks.size());
+  model = std::move (models[0]);
   return true;
 }
 
@@ -157,8 +208,17 @@ main (int argc, char** argv)
   if (!mid::apps::loadScene (options.scene, *cloud))
     return 1;
   const double load_ms = watch.getTime();
+  if (!options.extend_path.empty() && !box.valid) {
+    print_error (
+        "-extend: the model file '%s' holds no box of the object (its discovery "
+        "measured none), and only the box tells which keypoints belong to it.\n",
+        options.model_path.c_str());
+    return 1;
+  }
   mid::apps::ResultFiles outputs;
-  if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs))
+  if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs) ||
+      (!options.extend_path.empty() &&
+       !mid::apps::ResultFiles::canStage (options.extend_path)))
     return 1;
 
   pcl::StopWatch total;
@@ -195,6 +255,10 @@ main (int argc, char** argv)
   }
 
   mid::apps::printResult (*cloud, result, load_ms);
+  if (!options.extend_path.empty() &&
+      (!extendModel (*cloud, result, box, *model) ||
+       !outputs.saveModel (options.extend_path, *model, box)))
+    return 1;
   if (!options.pictures.write (cloud, result) ||
       !outputs.write (result, options.scene.name()))
     return 1;

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -54,7 +56,132 @@ matrixOf (const nlohmann::json& rows)
   return matrix;
 }
 
+/** The header of a model file. */
+nlohmann::json
+modelHeader (const std::string& path)
+{
+  return nlohmann::json::parse (std::ifstream (path));
+}
+
+/** The poses of the instances of the one object of a detect app's JSON result (none if no
+  * object was found).
+  */
+std::vector<Eigen::Matrix4f>
+detectedPoses (const std::string& path)
+{
+  const auto result = nlohmann::json::parse (std::ifstream (path));
+  std::vector<Eigen::Matrix4f> poses;
+  for (const auto& object : result.at ("objects"))
+    for (const auto& instance : object.at ("instances"))
+      poses.push_back (matrixOf (instance.at ("pose")));
+  return poses;
+}
+
 } // namespace
+
+TEST (DetectApp, ExtendedModelFindsACopyShowingAnotherFace)
+{
+  // Cookie boxes (0.12 x 0.09 x 0.07 m) with an orange-juice print on one side face. Seen from
+  // above, three copies give a model of the cookie print only, which misses a copy lying on
+  // that print, its side face towards an oblique camera. A copy seen obliquely with both faces
+  // is detected by its top, and -extend adds its side face to the model, which then finds the
+  // copy on its top, at its true pose.
+  mid::test::BoxSpec box;
+  box.texture = "bastoncini_cookie_box.png";
+  box.side_texture = "god_morgon_orange_juice_front.jpg";
+  box.size = Eigen::Vector3d (0.12, 0.09, 0.07);
+  const double tilt = 40.0;
+  const auto from_above =
+      mid::test::renderBoxes (mid::test::boxesLyingApart (box, {0, 1, 3}), 0.95);
+  const auto both_faces =
+      mid::test::renderBoxes (mid::test::boxesLyingApart (box, {0}), 0.95, tilt);
+  auto upside_down = mid::test::boxesLyingApart (box, {0});
+  upside_down[0].pose =
+      upside_down[0].pose * Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitY());
+  const auto side_only = mid::test::renderBoxes (upside_down, 0.95, tilt);
+
+  const mid::test::TemporaryFolder folder;
+  for (const auto& [name, scene] : {std::pair{"above.pcd", &from_above},
+                                    std::pair{"both.pcd", &both_faces},
+                                    std::pair{"side.pcd", &side_only}})
+    ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder.file (name), *scene->cloud),
+               0);
+  const auto discovered =
+      mid::test::runCommand (discoveryApp() + " " + folder.file ("above.pcd") +
+                             " -models " + folder.file ("model_"));
+  ASSERT_EQ (discovered.exit_code, 0) << discovered.output;
+  ASSERT_TRUE (modelHeader (folder.file ("model_0.json")).at ("box").is_object());
+  const auto detect = [&] (const std::string& model,
+                           const std::string& scene,
+                           const std::string& more) {
+    const auto run = mid::test::runCommand (detectApp() + " " + folder.file (model) +
+                                            " " + folder.file (scene) + " -json " +
+                                            folder.file ("out.json") + more);
+    EXPECT_EQ (run.exit_code, 0) << run.output;
+    return detectedPoses (folder.file ("out.json"));
+  };
+  ASSERT_TRUE (detect ("model_0.json", "side.pcd", "").empty())
+      << "the model seen from above holds nothing of the side face";
+
+  const auto anchor =
+      detect ("model_0.json", "both.pcd", " -extend " + folder.file ("extended.json"));
+  ASSERT_EQ (anchor.size(), 1u);
+  const auto original = modelHeader (folder.file ("model_0.json"));
+  const auto extended = modelHeader (folder.file ("extended.json"));
+  EXPECT_GT (extended.at ("landmarks").get<int>(),
+             original.at ("landmarks").get<int>());
+  EXPECT_EQ (extended.at ("box"), original.at ("box"));
+
+  const auto found = detect ("extended.json", "side.pcd", "");
+  ASSERT_EQ (found.size(), 1u);
+  // The model frame is tied to the box's own through the copy seen with both faces: X = G^-1 P.
+  const Eigen::Matrix4f model_in_box =
+      both_faces.boxes[0].pose.matrix().cast<float>().inverse() * anchor[0];
+  const Eigen::Matrix4f error =
+      (side_only.boxes[0].pose.matrix().cast<float>() * model_in_box).inverse() *
+      found[0];
+  EXPECT_LT (Eigen::AngleAxisf (Eigen::Matrix3f (error.topLeftCorner<3, 3>())).angle() *
+                 180.0f / static_cast<float> (M_PI),
+             2.0f);
+  const Eigen::Vector3f shift = error.topRightCorner<3, 1>();
+  EXPECT_LT (shift.norm(), 0.005f);
+}
+
+TEST (DetectApp, ExtendRefusesAModelWithoutBox)
+{
+  // Without the object's box nothing tells which keypoints belong to the object.
+  const char* cookies = "bastoncini_cookie_box.png";
+  const mid::test::TemporaryFolder folder;
+  const auto seen = mid::test::boxesLyingOnATable ({cookies, cookies, cookies});
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
+  ASSERT_EQ (mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
+                                    " -models " + folder.file ("model_"))
+                 .exit_code,
+             0);
+  auto header = modelHeader (folder.file ("model_0.json"));
+  ASSERT_TRUE (header.at ("box").is_object());
+  header["box"] = nullptr;
+  std::ofstream (folder.file ("no_box.json")) << header.dump();
+  std::filesystem::copy_file (folder.file ("model_0.pcd"), folder.file ("no_box.pcd"));
+  const std::string command =
+      detectApp() + " " + folder.file ("no_box.json") + " " + folder.file ("seen.pcd");
+  const auto result =
+      mid::test::runCommand (command + " -extend " + folder.file ("extended.json"));
+  EXPECT_FALSE (result.crashed);
+  EXPECT_NE (result.exit_code, 0);
+  EXPECT_NE (result.output.find ("holds no box of the object"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE (std::filesystem::exists (folder.file ("extended.json")));
+  // The same runs without -extend, and with the box.
+  EXPECT_EQ (mid::test::runCommand (command).exit_code, 0);
+  EXPECT_EQ (mid::test::runCommand (detectApp() + " " + folder.file ("model_0.json") +
+                                    " " + folder.file ("seen.pcd") + " -extend " +
+                                    folder.file ("extended.json"))
+                 .exit_code,
+             0);
+  EXPECT_TRUE (std::filesystem::exists (folder.file ("extended.json")));
+}
 
 TEST (DetectApp, ReportsTheObjectsBoxAtEachInstance)
 {
@@ -178,6 +305,8 @@ TEST (DetectApp, RefusesUnknownArgumentsAndMalformedNumbers)
         {" -inlier 0x8", "-inlier must be a number, got '0x8'"},
         {" -min_ratio 1e-50", "-min_ratio must be a number, got '1e-50'"},
         {" -min_spread -0.001", "min_spread is -0.001, must be >= 0"},
+        {" -extend " + folder.file ("extended.txt"),
+         "The extended model's file must end in .json"},
         // A second model would be ignored.
         {" " + folder.file ("model_0.json"),
          "Give exactly one model file MODEL.json (got 2)"},

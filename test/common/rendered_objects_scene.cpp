@@ -30,22 +30,38 @@ boxPose (double x, double y, double z, double roll, double tilt)
   return pose;
 }
 
-RenderedObjectsScene
-boxesLyingOnATable (const std::vector<const char*>& prints,
-                    const std::vector<std::size_t>& at)
+std::vector<BoxSpec>
+boxesLyingApart (const BoxSpec& box, const std::vector<std::size_t>& at)
 {
-  const Eigen::Vector3d size (0.12, 0.09, 0.04);
-  const double z = 0.95 - 0.5 * size.z();
+  const double table = 0.95;
   // x, y (metres) and turn (degrees) of each place.
   const double places[4][3] = {{-0.16, -0.1, 10.0},
                                {0.16, -0.12, -35.0},
                                {-0.15, 0.12, 70.0},
                                {0.17, 0.11, 160.0}};
   std::vector<BoxSpec> boxes;
-  for (std::size_t b = 0; b < prints.size() && b < at.size(); ++b) {
-    const double* place = places[at[b]];
-    boxes.push_back ({prints[b], size, boxPose (place[0], place[1], z, place[2])});
+  for (const std::size_t p : at) {
+    BoxSpec copy = box;
+    copy.pose =
+        boxPose (places[p][0], places[p][1], table - 0.5 * box.size.z(), places[p][2]);
+    boxes.push_back (copy);
   }
+  return boxes;
+}
+
+RenderedObjectsScene
+boxesLyingOnATable (const std::vector<const char*>& prints,
+                    const std::vector<std::size_t>& at)
+{
+  BoxSpec box;
+  box.size = Eigen::Vector3d (0.12, 0.09, 0.04);
+  const std::size_t count = std::min (prints.size(), at.size());
+  auto boxes = boxesLyingApart (
+      box,
+      std::vector<std::size_t> (at.begin(),
+                                at.begin() + static_cast<std::ptrdiff_t> (count)));
+  for (std::size_t b = 0; b < count; ++b)
+    boxes[b].texture = prints[b];
   return renderBoxes (boxes, 0.95);
 }
 
@@ -100,20 +116,26 @@ renderBoxes (const std::vector<BoxSpec>& boxes, double table_depth, double view_
     box.pose = turn * box.pose;
   mid::simulation::Scene scene;
   std::map<std::string, cv::Mat> textures;
-  for (const auto& box : result.boxes) {
-    if (textures.count (box.texture) == 0) {
+  const auto texture = [&textures] (const std::string& name) {
+    if (textures.count (name) == 0) {
       cv::Mat image;
       if (!mid::simulation::loadTexture (
-              std::string (MID_TEST_DATA_DIR) + "/textures/" + box.texture, image))
-        throw std::runtime_error ("cannot read texture " + box.texture);
-      textures[box.texture] = image;
+              std::string (MID_TEST_DATA_DIR) + "/textures/" + name, image))
+        throw std::runtime_error ("cannot read texture " + name);
+      textures[name] = image;
     }
+    return textures[name];
+  };
+  for (const auto& box : result.boxes) {
     auto shape = std::make_shared<mid::simulation::BoxShape> (
         box.size.x(), box.size.y(), box.size.z());
-    shape->setTexture (box.printed_all_around ? textures[box.texture]
+    shape->setTexture (box.printed_all_around ? texture (box.texture)
                                               : mid::simulation::makeUniformTexture (
                                                     cv::Vec3b (200, 200, 200)));
-    shape->setFaceTexture (mid::simulation::BoxShape::NEG_Z, textures[box.texture]);
+    shape->setFaceTexture (mid::simulation::BoxShape::NEG_Z, texture (box.texture));
+    if (!box.side_texture.empty())
+      shape->setFaceTexture (mid::simulation::BoxShape::NEG_Y,
+                             texture (box.side_texture));
     scene.addObject (shape, box.pose);
   }
   if (table_depth > 0.0) {

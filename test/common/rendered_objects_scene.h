@@ -27,6 +27,11 @@ struct BoxSpec
     * shows holds keypoints too.
     */
   bool printed_all_around = false;
+  /** \brief If not empty, another image (in data/textures) on the side face with outward
+    * normal -y, which a camera sees when the box is tilted towards it: a second face whose
+    * keypoints a model seen from the front lacks.
+    */
+  std::string side_texture;
 };
 
 /** \brief A rendered frame of boxes in front of an untextured background, exactly known. */
@@ -56,9 +61,16 @@ renderBoxes (const std::vector<BoxSpec>& boxes,
              double table_depth = 0.0,
              double view_tilt = 0.0);
 
-/** \brief Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m, one per print (a
-  * texture as in BoxSpec), at four fixed places and turns: the given places (indices 0 to 3),
-  * by default the first ones, as many as prints are given.
+/** \brief Copies of `box` (its prints and size) lying apart on a table at 0.95 m (their
+  * textured faces towards the camera), at four fixed places and turns, for boxes of 0.12 x
+  * 0.09 m or less: one copy at each of the given places (indices 0 to 3). For renderBoxes().
+  */
+std::vector<BoxSpec>
+boxesLyingApart (const BoxSpec& box, const std::vector<std::size_t>& at);
+
+/** \brief Boxes of 0.12 x 0.09 x 0.04 m lying apart on a table at 0.95 m (boxesLyingApart()),
+  * rendered, one per print (a texture as in BoxSpec): at the given places (indices 0 to 3), by
+  * default the first ones, as many as prints are given.
   */
 RenderedObjectsScene
 boxesLyingOnATable (const std::vector<const char*>& prints,
