@@ -5,6 +5,7 @@
 #include "visual_outputs.h"
 
 #include <mid/features/sift_keypoint_extractor.h>
+#include <mid/registration/instance_overlap.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/object_model_io.h>
 #include <mid/segmentation/model_box_extension.h>
@@ -247,6 +248,10 @@ main (int argc, char** argv)
   detector.setSeed (options.seed);
   if (!detector.detect (model->instances))
     return 1;
+  // Each detection takes only its inliers out of the matches: the rest of a copy's keypoints
+  // can give it a second, overlapping detection. One instance per physical copy, as discovery.
+  const std::size_t overlapping =
+      mid::removeOverlappingInstances (*result.keypoints, *model);
   result.timing_ms.emplace_back ("detection", watch.getTime());
   result.timing_ms.emplace_back ("total", total.getTime());
   if (!model->instances.empty()) {
@@ -255,6 +260,9 @@ main (int argc, char** argv)
   }
 
   mid::apps::printResult (*cloud, result, load_ms);
+  if (overlapping > 0)
+    print_info ("(%zu more detections lay on a copy detected already: dropped)\n",
+                overlapping);
   if (!options.extend_path.empty() &&
       (!extendModel (*cloud, result, box, *model) ||
        !outputs.saveModel (options.extend_path, *model, box)))

@@ -2,6 +2,7 @@
 
 #include "app_runner.h"
 #include "rendered_objects_scene.h"
+#include "tabletop_frame.h"
 #include "temporary_folder.h"
 #include "two_copies_scene.h"
 
@@ -181,6 +182,48 @@ TEST (DetectApp, ExtendRefusesAModelWithoutBox)
                  .exit_code,
              0);
   EXPECT_TRUE (std::filesystem::exists (folder.file ("extended.json")));
+}
+
+TEST (DetectApp, ReportsEachCopyOnce)
+{
+  // The juice cartons of the tabletop recipe: the model of a frame with five, detected in
+  // another frame with five. A detection takes only its inliers out of the matches, so the rest
+  // of a carton's keypoints can detect it a second time (seed 13: six detections on five
+  // cartons before overlapping ones were dropped); every instance must lie on a carton of its
+  // own.
+  const mid::test::TemporaryFolder folder;
+  mid::test::TabletopFrame seen, other;
+  ASSERT_TRUE (mid::test::renderTabletopFrame (5, 2, seen));
+  ASSERT_TRUE (mid::test::renderTabletopFrame (5, 13, other));
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
+  ASSERT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("other.pcd"), *other.cloud),
+      0);
+  const auto discovered =
+      mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
+                             " -models " + folder.file ("model_"));
+  ASSERT_EQ (discovered.exit_code, 0) << discovered.output;
+  const auto detected = mid::test::runCommand (
+      detectApp() + " " + folder.file ("model_0.json") + " " +
+      folder.file ("other.pcd") + " -json " + folder.file ("out.json"));
+  ASSERT_EQ (detected.exit_code, 0) << detected.output;
+  const auto result = nlohmann::json::parse (std::ifstream (folder.file ("out.json")));
+  ASSERT_EQ (result.at ("objects").size(), 1u);
+  std::set<int> cartons;
+  std::size_t instances = 0;
+  for (const auto& instance : result.at ("objects").at (0).at ("instances")) {
+    std::vector<Eigen::Vector2f> pixels;
+    for (const auto& uv : instance.at ("keypoints"))
+      pixels.emplace_back (uv.at (0).get<float>(), uv.at (1).get<float>());
+    const int carton = mid::test::objectUnderPixels (other, pixels);
+    EXPECT_GE (carton, 0) << "an instance on the background";
+    EXPECT_LT (carton, 5) << "an instance on a distractor";
+    EXPECT_EQ (cartons.count (carton), 0u) << "carton " << carton << " twice";
+    cartons.insert (carton);
+    ++instances;
+  }
+  EXPECT_GE (instances, 4u);
 }
 
 TEST (DetectApp, ReportsTheObjectsBoxAtEachInstance)

@@ -31,7 +31,7 @@ struct BoxSpec
     * normal -y, which a camera sees when the box is tilted towards it: a second face whose
     * keypoints a model seen from the front lacks.
     */
-  std::string side_texture;
+  std::string side_texture = {};
 };
 
 /** \brief A rendered frame of boxes in front of an untextured background, exactly known. */
