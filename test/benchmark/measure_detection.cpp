@@ -223,9 +223,9 @@ poseError (const Eigen::Matrix4f& found,
 {
   PoseError best;
   best.rotation_deg = 1e9;
-  for (std::size_t s = 0; s < symmetries.size(); ++s) {
+  for (const Eigen::Matrix3f& symmetry : symmetries) {
     Eigen::Matrix4f turn = Eigen::Matrix4f::Identity();
-    turn.topLeftCorner<3, 3>() = symmetries[s];
+    turn.topLeftCorner<3, 3>() = symmetry;
     const Eigen::Matrix4f expected = carton * turn * model_in_carton;
     const Eigen::Matrix3f relative =
         found.topLeftCorner<3, 3>().transpose() * expected.topLeftCorner<3, 3>();
@@ -234,7 +234,7 @@ poseError (const Eigen::Matrix4f& found,
       best = {angle,
               (found.topRightCorner<3, 1>() - expected.topRightCorner<3, 1>()).norm() *
                   1000.0,
-              symmetries[s].isIdentity()};
+              symmetry.isIdentity()};
   }
   return best;
 }
