@@ -8,6 +8,7 @@
 #include <mid/registration/instance_overlap.h>
 #include <mid/registration/model_instance_detector.h>
 #include <mid/registration/object_model_io.h>
+#include <mid/segmentation/instance_extent.h>
 #include <mid/segmentation/model_box_extension.h>
 
 #include <pcl/common/io.h>
@@ -15,6 +16,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 
+#include <filesystem>
 #include <string>
 
 using pcl::console::print_error;
@@ -58,9 +60,9 @@ printHelp (const char* program)
   print_info ("Output:\n  -json FILE          write the result as JSON (same format as "
               "discovery)\n");
   print_info (
-      "  -extend FILE.json   write the model extended by the keypoints each detected "
-      "instance\n                      shows inside the object's box (the model "
-      "file must hold one)\n");
+      "  -extend FILE.json   write the model (FILE.json + FILE.pcd) extended by the "
+      "keypoints\n                      each detected instance shows inside the "
+      "object's box (the\n                      model file must hold one)\n");
   mid::apps::VisualOutputs::printHelp();
   print_info ("Parameters:\n");
   const auto line = [] (const char* option, const char* meaning, double value) {
@@ -97,6 +99,34 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-iterations", 1},
                                       {"-seed", 1}};
 
+/** Whether the extended model's files (FILE.json and FILE.pcd) can be written without
+  * replacing the result or the scene; false after a one-line error.
+  */
+bool
+extendPathUsable (const Options& options)
+{
+  namespace fs = std::filesystem;
+  const fs::path json (options.extend_path);
+  if (json.extension() != ".json") {
+    print_error ("The extended model's file must end in .json (got '%s').\n",
+                 options.extend_path.c_str());
+    return false;
+  }
+  const auto same = [] (const fs::path& a, const std::string& b) {
+    std::error_code error;
+    return !b.empty() && fs::weakly_canonical (a, error) ==
+                             fs::weakly_canonical (fs::path (b), error);
+  };
+  const fs::path data = fs::path (json).replace_extension (".pcd");
+  if (same (json, options.json_path) || same (data, options.scene.pcd_path)) {
+    print_error ("-extend %s would write over %s.\n",
+                 options.extend_path.c_str(),
+                 same (json, options.json_path) ? "the -json result" : "the scene");
+    return false;
+  }
+  return true;
+}
+
 bool
 parseOptions (int argc, char** argv, Options& options)
 {
@@ -122,12 +152,8 @@ parseOptions (int argc, char** argv, Options& options)
     return false;
   parse_argument (argc, argv, "-json", options.json_path);
   parse_argument (argc, argv, "-extend", options.extend_path);
-  if (!options.extend_path.empty() &&
-      !mid::apps::endsWithIgnoringCase (options.extend_path, ".json")) {
-    print_error ("The extended model's file must end in .json (got '%s').\n",
-                 options.extend_path.c_str());
+  if (!options.extend_path.empty() && !extendPathUsable (options))
     return false;
-  }
   using mid::apps::parseNumber;
   if (!parseNumber (argc, argv, "-max_desc_dist", options.max_descriptor_distance) ||
       !parseNumber (argc, argv, "-inlier", options.inlier_threshold) ||
@@ -152,7 +178,7 @@ parseOptions (int argc, char** argv, Options& options)
 
 /** The model extended by the keypoints each detected instance (the model's instances) shows
   * inside the object's box, placed at the instance (ModelBoxExtender, with the box known from
-  * the model file); prints what was added. False after a one-line error.
+  * the model file); prints what was added. False after an error message.
   */
 bool
 extendModel (const pcl::PointCloud<PointT>& cloud,
@@ -160,15 +186,23 @@ extendModel (const pcl::PointCloud<PointT>& cloud,
              const mid::ModelSize& box,
              mid::ObjectModel& model)
 {
+  if (model.instances.empty()) {
+    print_info ("extended:  nothing detected, the model is written as it was\n");
+    return true;
+  }
   auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::copyPointCloud (cloud, *organized);
-  mid::KeypointSurface surface;
-  surface.organized = organized;
-  for (const auto& k : result.image_keypoints)
-    surface.keypoint_pixels.push_back (k.pixel_index);
+  Eigen::Vector4f plane;
+  if (!mid::fitSupportPlane (
+          *organized, mid::kDefaultPlaneTolerance, mid::kMinSupportPlaneShare, plane)) {
+    print_info ("extended:  no support plane in the frame (the box stands on one), the "
+                "model is written as it was\n");
+    return true;
+  }
   mid::ModelBoxExtender extender;
   extender.setInputKeypoints (result.keypoints);
-  extender.setKeypointSurface (surface);
+  extender.setKeypointSurface ({organized, mid::pixelIndices (result.image_keypoints)});
+  extender.setSupportPlane (plane);
   extender.setInputDescriptors (result.descriptors);
   extender.setKnownSizes ({box});
   mid::ObjectModels models{model};
@@ -205,10 +239,6 @@ main (int argc, char** argv)
   mid::ModelSize box;
   if (!mid::loadObjectModel (options.model_path, *model, box))
     return 1;
-  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>>();
-  if (!mid::apps::loadScene (options.scene, *cloud))
-    return 1;
-  const double load_ms = watch.getTime();
   if (!options.extend_path.empty() && !box.valid) {
     print_error (
         "-extend: the model file '%s' holds no box of the object (its discovery "
@@ -216,6 +246,10 @@ main (int argc, char** argv)
         options.model_path.c_str());
     return 1;
   }
+  auto cloud = pcl::make_shared<pcl::PointCloud<PointT>>();
+  if (!mid::apps::loadScene (options.scene, *cloud))
+    return 1;
+  const double load_ms = watch.getTime();
   mid::apps::ResultFiles outputs;
   if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs) ||
       (!options.extend_path.empty() &&
@@ -249,7 +283,8 @@ main (int argc, char** argv)
   if (!detector.detect (model->instances))
     return 1;
   // Each detection takes only its inliers out of the matches: the rest of a copy's keypoints
-  // can give it a second, overlapping detection. One instance per physical copy, as discovery.
+  // can detect it a second time. Drop a detection whose keypoints intermix with those of one
+  // with more keypoints, as discovery does.
   const std::size_t overlapping =
       mid::removeOverlappingInstances (*result.keypoints, *model);
   result.timing_ms.emplace_back ("detection", watch.getTime());
@@ -261,8 +296,9 @@ main (int argc, char** argv)
 
   mid::apps::printResult (*cloud, result, load_ms);
   if (overlapping > 0)
-    print_info ("(%zu more detections lay on a copy detected already: dropped)\n",
-                overlapping);
+    print_info (
+        "(%zu more detections intermixed with a larger one's keypoints: dropped)\n",
+        overlapping);
   if (!options.extend_path.empty() &&
       (!extendModel (*cloud, result, box, *model) ||
        !outputs.saveModel (options.extend_path, *model, box)))

@@ -114,8 +114,7 @@ runStages (const DiscoveryParameters& p,
   KeypointSurface keypoint_surface = frame;
   keypoint_surface.keypoint_pixels.clear();
   if (const auto& organized = frame.organized) {
-    for (const auto& k : result.image_keypoints)
-      keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+    keypoint_surface.keypoint_pixels = pixelIndices (result.image_keypoints);
     if (!isValidKeypointSurface (keypoint_surface, result.keypoints->size())) {
       PCL_ERROR (
           "[mid::discoverFromKeypoints] The organized frame (%u x %u) does not hold "

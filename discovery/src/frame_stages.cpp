@@ -39,9 +39,7 @@ KeypointSurface
 withKeypointPixels (const KeypointSurface& frame, const DiscoveryResult& result)
 {
   KeypointSurface keypoint_surface = frame;
-  keypoint_surface.keypoint_pixels.clear();
-  for (const auto& k : result.image_keypoints)
-    keypoint_surface.keypoint_pixels.push_back (k.pixel_index);
+  keypoint_surface.keypoint_pixels = pixelIndices (result.image_keypoints);
   return keypoint_surface;
 }
 

@@ -250,4 +250,16 @@ removeInstances (const std::vector<std::vector<bool>>& remove, ObjectModels& mod
   return removed;
 }
 
+bool
+isModelBox (const ModelSize& box)
+{
+  const Eigen::Matrix3f rotation = box.box_in_model.topLeftCorner<3, 3>();
+  return box.size.allFinite() && box.size.x() > 0.0f && box.size.x() <= box.size.y() &&
+         box.size.y() <= box.size.z() && box.agreeing >= 1 &&
+         box.box_in_model.allFinite() &&
+         box.box_in_model.row (3) == Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) &&
+         (rotation.transpose() * rotation).isIdentity (1e-3f) &&
+         rotation.determinant() > 0.0f;
+}
+
 } // namespace mid

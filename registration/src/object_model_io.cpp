@@ -105,30 +105,9 @@ readNumbers (const nlohmann::json& list, std::size_t count, float* values)
   return true;
 }
 
-/** What a box in a model file must be, in words: isBox(). */
-const char* const kBoxRule =
-    "a \"box\" is 3 positive ascending edges, a number of copies of "
-    "at least 1 and a 4x4 rigid pose";
-
-/** Whether a box that claims to be valid is one: its edges positive, finite and ascending, one
-  * copy or more agreeing, its pose rigid (a rotation within 1e-3, not a mirror, the last row
-  * 0 0 0 1). The writer and the reader ask the same.
-  */
-bool
-isBox (const ModelSize& box)
-{
-  const Eigen::Matrix3f rotation = box.box_in_model.topLeftCorner<3, 3>();
-  return box.size.allFinite() && box.size.x() > 0.0f && box.size.x() <= box.size.y() &&
-         box.size.y() <= box.size.z() && box.agreeing >= 1 &&
-         box.box_in_model.allFinite() &&
-         box.box_in_model.row (3) == Eigen::RowVector4f (0.0f, 0.0f, 0.0f, 1.0f) &&
-         (rotation.transpose() * rotation).isIdentity (1e-3f) &&
-         rotation.determinant() > 0.0f;
-}
-
 /** The box in a model file's header (detail::writeJsonBox()): not valid when it is absent or
   * null.
-  * \return false (box not valid) if it is malformed or no box (isBox())
+  * \return false (box not valid) if it is malformed or no box (isModelBox())
   */
 bool
 readBox (const nlohmann::json& header, ModelSize& box)
@@ -151,7 +130,7 @@ readBox (const nlohmann::json& header, ModelSize& box)
         std::min<std::uint64_t> (copies, std::numeric_limits<int>::max()));
     box.box_in_model = pose;
   }
-  if (!read || !isBox (box)) {
+  if (!read || !isModelBox (box)) {
     box = ModelSize();
     return false;
   }
@@ -179,10 +158,10 @@ saveObjectModel (const std::string& path,
     PCL_ERROR ("[mid::saveObjectModel] '%s' must end in .json\n", path.c_str());
     return false;
   }
-  if (box.valid && !isBox (box)) {
+  if (box.valid && !isModelBox (box)) {
     PCL_ERROR ("[mid::saveObjectModel] not writing '%s': its box is no box (%s)\n",
                path.c_str(),
-               kBoxRule);
+               MODEL_BOX_RULE);
     return false;
   }
   pcl::PointCloud<ModelFilePoint> rows;
@@ -275,7 +254,8 @@ loadObjectModel (const std::string& path, ObjectModel& model, ModelSize& box)
         model,
         box);
   if (!readBox (header, box))
-    return fail ("'" + path + "' has a malformed box (" + kBoxRule + ")", model, box);
+    return fail (
+        "'" + path + "' has a malformed box (" + MODEL_BOX_RULE + ")", model, box);
   const std::string data_path = dataPathOf (path);
   pcl::PointCloud<ModelFilePoint> rows;
   pcl::PCLPointCloud2 blob;

@@ -63,6 +63,10 @@ ModelBoxExtender::extend (ObjectModels& models, ModelExtension& extension) const
     problem = "the known sizes are not one per model (" +
               std::to_string (known_sizes_.size()) + " for " +
               std::to_string (models.size()) + " models)";
+  for (std::size_t m = 0; problem.empty() && m < known_sizes_.size(); ++m)
+    if (known_sizes_[m].valid && !isModelBox (known_sizes_[m]))
+      problem = "the known size of model " + std::to_string (m) + " is no box (" +
+                MODEL_BOX_RULE + ")";
   if (!problem.empty()) {
     PCL_ERROR ("[mid::ModelBoxExtender::extend] %s.\n", problem.c_str());
     return false;

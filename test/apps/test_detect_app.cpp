@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -107,45 +108,66 @@ TEST (DetectApp, ExtendedModelFindsACopyShowingAnotherFace)
                                     std::pair{"side.pcd", &side_only}})
     ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (folder.file (name), *scene->cloud),
                0);
-  const auto discovered =
-      mid::test::runCommand (discoveryApp() + " " + folder.file ("above.pcd") +
-                             " -models " + folder.file ("model_"));
+  const auto discovered = mid::test::runCommand (
+      discoveryApp() + " " + folder.file ("above.pcd") + " -models " +
+      folder.file ("model_") + " -json " + folder.file ("above.json"));
   ASSERT_EQ (discovered.exit_code, 0) << discovered.output;
   ASSERT_TRUE (modelHeader (folder.file ("model_0.json")).at ("box").is_object());
+  // The model frame, tied to the box's own through a copy discovered: X = G^-1 P, with G the
+  // true pose of the copy nearest to the instance.
+  const auto seen = detectedPoses (folder.file ("above.json"));
+  ASSERT_FALSE (seen.empty());
+  const auto nearest = std::min_element (
+      from_above.boxes.begin(),
+      from_above.boxes.end(),
+      [&seen] (const mid::test::BoxSpec& a, const mid::test::BoxSpec& b) {
+        const Eigen::Vector3f at = seen[0].topRightCorner<3, 1>();
+        return (a.pose.translation().cast<float>() - at).norm() <
+               (b.pose.translation().cast<float>() - at).norm();
+      });
+  const Eigen::Matrix4f model_in_box =
+      nearest->pose.matrix().cast<float>().inverse() * seen[0];
+  const auto expect_at = [&model_in_box] (const Eigen::Matrix4f& found,
+                                          const mid::test::BoxSpec& copy) {
+    const Eigen::Matrix4f error =
+        (copy.pose.matrix().cast<float>() * model_in_box).inverse() * found;
+    EXPECT_LT (
+        Eigen::AngleAxisf (Eigen::Matrix3f (error.topLeftCorner<3, 3>())).angle() *
+            180.0f / static_cast<float> (M_PI),
+        2.0f);
+    const Eigen::Vector3f shift = error.topRightCorner<3, 1>();
+    EXPECT_LT (shift.norm(), 0.005f);
+  };
+
+  // Each run writes a result of its own: a failed run leaves none to read.
   const auto detect = [&] (const std::string& model,
                            const std::string& scene,
+                           const std::string& out,
                            const std::string& more) {
     const auto run = mid::test::runCommand (detectApp() + " " + folder.file (model) +
                                             " " + folder.file (scene) + " -json " +
-                                            folder.file ("out.json") + more);
+                                            folder.file (out) + more);
     EXPECT_EQ (run.exit_code, 0) << run.output;
-    return detectedPoses (folder.file ("out.json"));
+    return detectedPoses (folder.file (out));
   };
-  ASSERT_TRUE (detect ("model_0.json", "side.pcd", "").empty())
+  ASSERT_TRUE (detect ("model_0.json", "side.pcd", "before.json", "").empty())
       << "the model seen from above holds nothing of the side face";
 
-  const auto anchor =
-      detect ("model_0.json", "both.pcd", " -extend " + folder.file ("extended.json"));
+  const auto anchor = detect ("model_0.json",
+                              "both.pcd",
+                              "both.json",
+                              " -extend " + folder.file ("extended.json"));
   ASSERT_EQ (anchor.size(), 1u);
+  expect_at (anchor[0], both_faces.boxes[0]);
   const auto original = modelHeader (folder.file ("model_0.json"));
   const auto extended = modelHeader (folder.file ("extended.json"));
   EXPECT_GT (extended.at ("landmarks").get<int>(),
              original.at ("landmarks").get<int>());
-  EXPECT_EQ (extended.at ("box"), original.at ("box"));
+  EXPECT_EQ (extended.at ("box"), original.at ("box")) << "the box is kept";
 
-  const auto found = detect ("extended.json", "side.pcd", "");
+  const auto found = detect ("extended.json", "side.pcd", "after.json", "");
   ASSERT_EQ (found.size(), 1u);
-  // The model frame is tied to the box's own through the copy seen with both faces: X = G^-1 P.
-  const Eigen::Matrix4f model_in_box =
-      both_faces.boxes[0].pose.matrix().cast<float>().inverse() * anchor[0];
-  const Eigen::Matrix4f error =
-      (side_only.boxes[0].pose.matrix().cast<float>() * model_in_box).inverse() *
-      found[0];
-  EXPECT_LT (Eigen::AngleAxisf (Eigen::Matrix3f (error.topLeftCorner<3, 3>())).angle() *
-                 180.0f / static_cast<float> (M_PI),
-             2.0f);
-  const Eigen::Vector3f shift = error.topRightCorner<3, 1>();
-  EXPECT_LT (shift.norm(), 0.005f);
+  expect_at (found[0], side_only.boxes[0]);
 }
 
 TEST (DetectApp, ExtendRefusesAModelWithoutBox)
@@ -350,6 +372,11 @@ TEST (DetectApp, RefusesUnknownArgumentsAndMalformedNumbers)
         {" -min_spread -0.001", "min_spread is -0.001, must be >= 0"},
         {" -extend " + folder.file ("extended.txt"),
          "The extended model's file must end in .json"},
+        {" -extend " + folder.file ("extended.JSON"),
+         "The extended model's file must end in .json"},
+        {" -extend " + folder.file ("out.json") + " -json " + folder.file ("out.json"),
+         "would write over the -json result"},
+        {" -extend " + folder.file ("scene.json"), "would write over the scene"},
         // A second model would be ignored.
         {" " + folder.file ("model_0.json"),
          "Give exactly one model file MODEL.json (got 2)"},

@@ -328,30 +328,30 @@ accumulate (mid::ObjectModel model,
     model.instances = detect (model, features);
     auto organized = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
     pcl::copyPointCloud (*frame.cloud, *organized);
-    mid::KeypointSurface surface;
-    surface.organized = organized;
-    for (const auto& k : features.image)
-      surface.keypoint_pixels.push_back (k.pixel_index);
     mid::ModelBoxExtender extender;
     extender.setInputKeypoints (features.keypoints);
-    extender.setKeypointSurface (surface);
+    extender.setKeypointSurface ({organized, mid::pixelIndices (features.image)});
     extender.setInputDescriptors (features.descriptors);
     extender.setKnownSizes ({box});
     mid::ObjectModels models{model};
     mid::ModelExtension extension;
-    if (!extender.extend (models, extension))
+    if (!extender.extend (models, extension)) {
+      std::printf ("| %u | could not extend the model |\n", seed);
       continue;
+    }
+    // The carton under each instance (-1: on the background or a distractor).
     int on_carton = 0, own = 0;
     std::vector<int> carton_of (model.instances.size(), -1);
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
-      carton_of[i] = objectUnder (frame, features.image, model.instances[i].keypoints);
-      on_carton += carton_of[i] >= 0 && carton_of[i] < 5 ? 1 : 0;
+      const int object =
+          objectUnder (frame, features.image, model.instances[i].keypoints);
+      carton_of[i] = object >= 0 && object < 5 ? object : -1;
+      on_carton += carton_of[i] >= 0 ? 1 : 0;
     }
     for (const auto& [i, k] : extension.observations[0]) {
       const auto& kp = features.image[static_cast<std::size_t> (k)];
-      own += frame.rendered.instances.at<int> (static_cast<int> (std::lround (kp.v)),
-                                               static_cast<int> (std::lround (kp.u))) ==
-                     carton_of[i]
+      own += carton_of[i] >= 0 && mid::test::objectUnderPixels (
+                                      frame, {{kp.u, kp.v}}) == carton_of[i]
                  ? 1
                  : 0;
     }

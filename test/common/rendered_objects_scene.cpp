@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,8 @@ boxesLyingApart (const BoxSpec& box, const std::vector<std::size_t>& at)
                                {0.17, 0.11, 160.0}};
   std::vector<BoxSpec> boxes;
   for (const std::size_t p : at) {
+    if (p >= 4)
+      throw std::out_of_range ("no place " + std::to_string (p) + " on the table");
     BoxSpec copy = box;
     copy.pose =
         boxPose (places[p][0], places[p][1], table - 0.5 * box.size.z(), places[p][2]);

@@ -63,7 +63,8 @@ renderBoxes (const std::vector<BoxSpec>& boxes,
 
 /** \brief Copies of `box` (its prints and size) lying apart on a table at 0.95 m (their
   * textured faces towards the camera), at four fixed places and turns, for boxes of 0.12 x
-  * 0.09 m or less: one copy at each of the given places (indices 0 to 3). For renderBoxes().
+  * 0.09 m or less: one copy at each of the given places (indices 0 to 3; another throws
+  * std::out_of_range). For renderBoxes().
   */
 std::vector<BoxSpec>
 boxesLyingApart (const BoxSpec& box, const std::vector<std::size_t>& at);

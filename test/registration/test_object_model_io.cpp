@@ -96,8 +96,9 @@ protected:
     EXPECT_EQ (box.agreeing, 0);
   }
 
-  /** Saves a model with @p saved_box, applies each (pattern, replacement) rewrite to
-   *  its header in turn and expects the loader to refuse the result. */
+  /** Save a model with `saved_box`, apply each (pattern, replacement) rewrite to its header in
+    * turn and expect the loader to refuse the result.
+    */
   void
   expectEachRewriteRefused (
       const std::vector<std::pair<std::string, std::string>>& rewrites,

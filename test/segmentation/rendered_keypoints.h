@@ -51,10 +51,9 @@ struct RenderedKeypoints
     surface.organized = points;
     surface.intensity =
         std::make_shared<const std::vector<float>> (greyLevels (colour));
-    for (const auto& k : image_keypoints) {
-      surface.keypoint_pixels.push_back (k.pixel_index);
+    surface.keypoint_pixels = mid::pixelIndices (image_keypoints);
+    for (const auto& k : image_keypoints)
       box_of.push_back (boxUnderKeypoints (scene, {{k.u, k.v}}));
-    }
   }
 
   /** \brief The keypoints on the given boxes (-1: the table). */

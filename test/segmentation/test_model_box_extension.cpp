@@ -324,6 +324,16 @@ TEST (ModelBoxExtender, ExtendsWithinAKnownBoxInsteadOfMeasuring)
   known.setKnownSizes ({half, half});
   EXPECT_FALSE (known.extend (models, extension));
   EXPECT_TRUE (extension.observations.empty());
+  // ... and so is a valid box that is no box: mirrored, or with edges not ascending.
+  half.valid = true;
+  mid::ModelSize mirrored = half, unsorted = half;
+  mirrored.box_in_model.col (0) *= -1.0f;
+  unsorted.size = Eigen::Vector3f (0.12f, 0.045f, 0.04f);
+  for (const auto& box : {mirrored, unsorted}) {
+    known.setKnownSizes ({box});
+    EXPECT_FALSE (known.extend (models, extension));
+    EXPECT_EQ (models[0].landmarks.size(), original.landmarks.size());
+  }
 }
 
 TEST (ModelBoxExtender, LeavesTheModelsWithoutASupportPlaneOrASize)

@@ -43,4 +43,17 @@ struct ImageKeypoint
 /** \brief Image positions of keypoints, in the order of their KeypointCloud. */
 using ImageKeypoints = std::vector<ImageKeypoint>;
 
+/** \brief The pixel (ImageKeypoint::pixel_index) of each keypoint, in their order: the
+  * keypoint pixels of the steps that read the organized frame around the keypoints.
+  */
+inline pcl::Indices
+pixelIndices (const ImageKeypoints& keypoints)
+{
+  pcl::Indices pixels;
+  pixels.reserve (keypoints.size());
+  for (const auto& k : keypoints)
+    pixels.push_back (k.pixel_index);
+  return pixels;
+}
+
 } // namespace mid

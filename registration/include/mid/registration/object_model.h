@@ -85,6 +85,20 @@ struct ModelSize
 /** \brief One ModelSize per model. */
 using ModelSizes = std::vector<ModelSize, Eigen::aligned_allocator<ModelSize>>;
 
+/** \brief What a box that claims to be valid must be, in words (isModelBox()). */
+inline constexpr const char* MODEL_BOX_RULE =
+    "a box is 3 positive ascending edges, a number of copies of at least 1 and a 4x4 "
+    "rigid "
+    "pose";
+
+/** \brief Whether a box that claims to be valid is one: its edges positive, finite and
+  * ascending, one copy or more agreeing, its pose rigid (a rotation within 1e-3, not a mirror,
+  * the last row 0 0 0 1). The model files' writer and reader and
+  * ModelBoxExtender::setKnownSizes() ask the same; `valid` itself is not looked at.
+  */
+bool
+isModelBox (const ModelSize& box);
+
 /** \brief What is wrong with a model's observations, for the steps that check their input:
   * an instance with unequal numbers of keypoints and landmarks, or an observation of a
   * keypoint outside [0, keypoints) or of a landmark the model does not have.

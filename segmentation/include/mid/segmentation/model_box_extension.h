@@ -47,7 +47,7 @@ struct ModelExtension
   *    instance's pose) with its descriptor, observed by that instance.
   *
   * A model without a size (fewer measured instances agree on one than setMinAgreeing() asks,
-  * default 1) is not extended. The added landmarks rest on
+  * default 1, or a known box that is not valid) is not extended. The added landmarks rest on
   * one view and on the instance's pose: meant for a search of more copies (the guided search),
   * after which retractModelExtension() takes them out again (an instance would otherwise hold
   * keypoints of a neighbour that its grown box reaches, and the model points of it), but for
@@ -116,7 +116,8 @@ public:
     * \param[out] extension what was added, for retractModelExtension(); one entry per model
     * \return false (with a PCL_ERROR, models unchanged, extension empty) on missing or
     * inconsistent input, a parameter out of range, an observation outside the keypoints, or
-    * known sizes (setKnownSizes()) that are not one per model
+    * known sizes (setKnownSizes()) that are not one per model or claim a valid box that is no
+    * box (isModelBox())
     */
   bool
   extend (ObjectModels& models, ModelExtension& extension) const;
