@@ -58,6 +58,26 @@ matrixOf (const nlohmann::json& rows)
   return matrix;
 }
 
+/** The print of the cookie boxes. */
+const char* const kCookies = "bastoncini_cookie_box.png";
+
+/** Three cookie boxes of 0.12 x 0.09 x 0.04 m lying apart on a table (folder/seen.pcd),
+  * discovered into folder/model_0.json (with the box all three agree on); false after a test
+  * failure if discovery failed.
+  */
+bool
+discoverCookieBoxes (const mid::test::TemporaryFolder& folder)
+{
+  const auto seen = mid::test::boxesLyingOnATable ({kCookies, kCookies, kCookies});
+  EXPECT_EQ (
+      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
+  const auto discovered =
+      mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
+                             " -models " + folder.file ("model_"));
+  EXPECT_EQ (discovered.exit_code, 0) << discovered.output;
+  return discovered.exit_code == 0;
+}
+
 /** The header of a model file. */
 nlohmann::json
 modelHeader (const std::string& path)
@@ -89,7 +109,7 @@ TEST (DetectApp, ExtendedModelFindsACopyShowingAnotherFace)
   // is detected by its top, and -extend adds its side face to the model, which then finds the
   // copy on its top, at its true pose.
   mid::test::BoxSpec box;
-  box.texture = "bastoncini_cookie_box.png";
+  box.texture = kCookies;
   box.side_texture = "god_morgon_orange_juice_front.jpg";
   box.size = Eigen::Vector3d (0.12, 0.09, 0.07);
   const double tilt = 40.0;
@@ -173,15 +193,8 @@ TEST (DetectApp, ExtendedModelFindsACopyShowingAnotherFace)
 TEST (DetectApp, ExtendRefusesAModelWithoutBox)
 {
   // Without the object's box nothing tells which keypoints belong to the object.
-  const char* cookies = "bastoncini_cookie_box.png";
   const mid::test::TemporaryFolder folder;
-  const auto seen = mid::test::boxesLyingOnATable ({cookies, cookies, cookies});
-  ASSERT_EQ (
-      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
-  ASSERT_EQ (mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
-                                    " -models " + folder.file ("model_"))
-                 .exit_code,
-             0);
+  ASSERT_TRUE (discoverCookieBoxes (folder));
   auto header = modelHeader (folder.file ("model_0.json"));
   ASSERT_TRUE (header.at ("box").is_object());
   header["box"] = nullptr;
@@ -254,16 +267,9 @@ TEST (DetectApp, ReportsTheObjectsBoxAtEachInstance)
   // object's box, which all three agree on, and saves it with the model. In another frame,
   // with copies at a new place and at an old one, the detection reports that box, and placed
   // at each instance it lies on that copy's box.
-  const char* cookies = "bastoncini_cookie_box.png";
   const mid::test::TemporaryFolder folder;
-  const auto seen = mid::test::boxesLyingOnATable ({cookies, cookies, cookies});
-  ASSERT_EQ (
-      pcl::io::savePCDFileBinaryCompressed (folder.file ("seen.pcd"), *seen.cloud), 0);
-  const auto discovered =
-      mid::test::runCommand (discoveryApp() + " " + folder.file ("seen.pcd") +
-                             " -models " + folder.file ("model_"));
-  ASSERT_EQ (discovered.exit_code, 0) << discovered.output;
-  const auto other = mid::test::boxesLyingOnATable ({cookies, cookies}, {3, 0});
+  ASSERT_TRUE (discoverCookieBoxes (folder));
+  const auto other = mid::test::boxesLyingOnATable ({kCookies, kCookies}, {3, 0});
   ASSERT_EQ (
       pcl::io::savePCDFileBinaryCompressed (folder.file ("other.pcd"), *other.cloud),
       0);
