@@ -112,10 +112,12 @@ extendPathUsable (const Options& options)
                  options.extend_path.c_str());
     return false;
   }
+  // Two names of one file (a path that cannot be resolved names none).
   const auto same = [] (const fs::path& a, const std::string& b) {
-    std::error_code error;
-    return !b.empty() && fs::weakly_canonical (a, error) ==
-                             fs::weakly_canonical (fs::path (b), error);
+    std::error_code error_a, error_b;
+    const fs::path resolved_a = fs::weakly_canonical (a, error_a),
+                   resolved_b = fs::weakly_canonical (fs::path (b), error_b);
+    return !b.empty() && !error_a && !error_b && resolved_a == resolved_b;
   };
   const fs::path data = fs::path (json).replace_extension (".pcd");
   if (same (json, options.json_path) || same (data, options.scene.pcd_path)) {
