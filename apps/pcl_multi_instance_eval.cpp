@@ -256,6 +256,17 @@ methodNames (const std::string& list, const std::vector<fs::path>& results)
   return names;
 }
 
+/** True if some pair of some scenario has the groups of the result (discovery results do). */
+bool
+anyPairGroups (const std::map<std::string, mid::evaluation::ScoreSummary>& scenarios)
+{
+  for (const auto& [name, summary] : scenarios)
+    for (const int g : summary.pair_groups)
+      if (g >= 0)
+        return true;
+  return false;
+}
+
 } // namespace
 
 int
@@ -402,6 +413,12 @@ main (int argc, char** argv)
         "whose rotation is wrong by more than 10 and 45 deg, then the same modulo "
         "the symmetries of the object's shape, from models_info.json):\n\n" +
         mid::evaluation::formatPoseErrorReport (method.scenarios, {10.0, 45.0});
+    if (anyPairGroups (method.scenarios))
+      report +=
+          "\nThe same pairs within one group of the result (copies whose relative "
+          "pose rests on landmarks they share, their print) and across groups "
+          "(relative poses that rest on a box):\n\n" +
+          mid::evaluation::formatGroupPoseReport (method.scenarios, 45.0);
     if (!sizes.empty())
       report +=
           "\nThe box each correct object's copies occupy on the table (the result's "

@@ -31,9 +31,10 @@ quoted (const std::string& text)
 void
 writeInstance (std::ostringstream& out,
                const ModelInstance& instance,
+               int group,
                const ImageKeypoints& image)
 {
-  out << "        {\"pose\": ";
+  out << "        {\"group\": " << group << ", \"pose\": ";
   detail::writeJsonMatrix (out, instance.pose);
   out << ",\n         \"keypoints\": [";
   float u_min = std::numeric_limits<float>::max(), v_min = u_min;
@@ -85,8 +86,9 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
         << ",\n     \"box\": ";
     detail::writeJsonBox (out, modelBox (result, m), "\n             ");
     out << ",\n     \"instances\": [\n";
+    const std::vector<int> groups = sharedLandmarkGroups (model);
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
-      writeInstance (out, model.instances[i], result.image_keypoints);
+      writeInstance (out, model.instances[i], groups[i], result.image_keypoints);
       out << (i + 1 < model.instances.size() ? ",\n" : "\n");
     }
     out << "     ]}";

@@ -226,6 +226,55 @@ poseErrorRow (const std::string& name,
   return text + " |\n";
 }
 
+/** " | count | median | above (share)" of the errors, without the count if `with_count` is
+  * false; for groupPoseRow().
+  */
+std::string
+errorColumns (const std::vector<double>& errors, double threshold_deg, bool with_count)
+{
+  const auto above =
+      std::count_if (errors.begin(), errors.end(), [threshold_deg] (double e) {
+        return e > threshold_deg;
+      });
+  char text[64];
+  std::string columns;
+  if (with_count) {
+    std::snprintf (text, sizeof (text), " | %5zu", errors.size());
+    columns = text;
+  }
+  std::snprintf (text,
+                 sizeof (text),
+                 " | %6.2f | %4td (%5.3f)",
+                 median (errors),
+                 above,
+                 errors.empty() ? 0.0
+                                : static_cast<double> (above) /
+                                      static_cast<double> (errors.size()));
+  return columns + text;
+}
+
+std::string
+groupPoseRow (const std::string& name, const ScoreSummary& s, double threshold_deg)
+{
+  std::vector<double> within, across, across_symmetric;
+  for (std::size_t p = 0;
+       p < s.pair_groups.size() && p < s.rotation_errors_deg.size() &&
+       p < s.symmetric_rotation_errors_deg.size();
+       ++p) {
+    if (s.pair_groups[p] == 1)
+      within.push_back (s.rotation_errors_deg[p]);
+    else if (s.pair_groups[p] == 0) {
+      across.push_back (s.rotation_errors_deg[p]);
+      across_symmetric.push_back (s.symmetric_rotation_errors_deg[p]);
+    }
+  }
+  char line[32];
+  std::snprintf (line, sizeof (line), "| %-10s", name.c_str());
+  return line + errorColumns (within, threshold_deg, true) +
+         errorColumns (across, threshold_deg, true) +
+         errorColumns (across_symmetric, threshold_deg, false) + " |\n";
+}
+
 } // namespace
 
 void
@@ -243,6 +292,7 @@ ScoreSummary::add (const FrameScore& score, const DetectionResult& result)
   }
   append (rotation_errors_deg, score.rotation_errors_deg);
   append (symmetric_rotation_errors_deg, score.symmetric_rotation_errors_deg);
+  append (pair_groups, score.pair_groups);
   append (found_shared_cells, score.found_shared_cells);
   append (missed_shared_cells, score.missed_shared_cells);
   append (translation_errors_mm, score.translation_errors_mm);
@@ -268,6 +318,7 @@ ScoreSummary::add (const ScoreSummary& other)
   pair_fn += other.pair_fn;
   append (rotation_errors_deg, other.rotation_errors_deg);
   append (symmetric_rotation_errors_deg, other.symmetric_rotation_errors_deg);
+  append (pair_groups, other.pair_groups);
   append (found_shared_cells, other.found_shared_cells);
   append (missed_shared_cells, other.missed_shared_cells);
   append (translation_errors_mm, other.translation_errors_mm);
@@ -337,6 +388,28 @@ formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
                                  [&thresholds_deg] (const std::string& name,
                                                     const ScoreSummary& summary) {
                                    return poseErrorRow (name, summary, thresholds_deg);
+                                 });
+}
+
+std::string
+formatGroupPoseReport (const std::map<std::string, ScoreSummary>& scenarios,
+                       double threshold_deg)
+{
+  char header[512];
+  std::snprintf (
+      header,
+      sizeof (header),
+      "| scenario   | pairs in one group | rot. err. deg (median) | rot. err. > %g "
+      "deg | pairs across groups | rot. err. deg (median) | rot. err. > %g deg | "
+      "rot. err. deg mod. symmetry (median) | rot. err. > %g deg mod. symmetry "
+      "|\n|---|---|---|---|---|---|---|---|---|\n",
+      threshold_deg,
+      threshold_deg,
+      threshold_deg);
+  return header + rowsWithTotal (scenarios,
+                                 [threshold_deg] (const std::string& name,
+                                                  const ScoreSummary& summary) {
+                                   return groupPoseRow (name, summary, threshold_deg);
                                  });
 }
 

@@ -52,6 +52,8 @@ readDetectionResult (const std::string& path, DetectionResult& result)
                                 .get<float>();
         for (const auto& uv : instance.at ("keypoints"))
           d.keypoints.emplace_back (uv.at (0).get<float>(), uv.at (1).get<float>());
+        if (instance.contains ("group"))
+          d.group = instance.at ("group").get<int>();
         detected.instances.push_back (d);
       }
       result.objects.push_back (detected);

@@ -56,6 +56,11 @@ addPoseErrors (const GroundTruthFrame& truth,
           estimated.topLeftCorner<3, 3>() * ga.topLeftCorner<3, 3>().cast<double>();
       score.symmetric_rotation_errors_deg.push_back (symmetricRotationError (
           b_estimated, gb.topLeftCorner<3, 3>().cast<double>(), symmetries));
+      const int group_a = object.instances[hits[a].first].group;
+      const int group_b = object.instances[hits[b].first].group;
+      score.pair_groups.push_back (group_a < 0 || group_b < 0 ? -1
+                                   : group_a == group_b       ? 1
+                                                              : 0);
       const Eigen::Vector4d origin = ga.col (3).cast<double>();
       score.translation_errors_mm.push_back (
           ((estimated - expected) * origin).head<3>().norm() * 1000.0);

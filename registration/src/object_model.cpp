@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <utility>
 
@@ -37,6 +38,39 @@ descriptorProblem (const ObjectModel& model)
                     }))
     return "every model descriptor must describe a landmark of the model";
   return {};
+}
+
+std::vector<int>
+sharedLandmarkGroups (const ObjectModel& model)
+{
+  const std::size_t n = model.instances.size();
+  std::vector<std::size_t> parent (n);
+  std::iota (parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&parent] (std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<int> first_observer (model.landmarks.size(), -1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const int l : model.instances[i].landmarks) {
+      if (l < 0 || static_cast<std::size_t> (l) >= first_observer.size())
+        continue;
+      auto& first = first_observer[static_cast<std::size_t> (l)];
+      if (first < 0)
+        first = static_cast<int> (i);
+      else
+        parent[root (i)] = root (static_cast<std::size_t> (first));
+    }
+  std::vector<int> group (n, -1), group_of_root (n, -1);
+  int groups = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    int& g = group_of_root[root (i)];
+    if (g < 0)
+      g = groups++;
+    group[i] = g;
+  }
+  return group;
 }
 
 void

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <vector>
 
 namespace mid {
@@ -48,40 +47,6 @@ boxTurns (const Eigen::Vector3f& size,
   while (std::next_permutation (axes.begin(), axes.end()));
   // std::next_permutation starts at the identity permutation and signs 0 is all +1.
   return turns;
-}
-
-/** For each instance, the group it belongs to: instances observing a common landmark are in
-  * one group. Groups are numbered in the order of their first instance.
-  */
-std::vector<int>
-landmarkGroups (const ObjectModel& model)
-{
-  const std::size_t n = model.instances.size();
-  std::vector<std::size_t> parent (n);
-  std::iota (parent.begin(), parent.end(), std::size_t{0});
-  const auto root = [&parent] (std::size_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::vector<int> first_observer (model.landmarks.size(), -1);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const int l : model.instances[i].landmarks) {
-      auto& first = first_observer[static_cast<std::size_t> (l)];
-      if (first < 0)
-        first = static_cast<int> (i);
-      else
-        parent[root (i)] = root (static_cast<std::size_t> (first));
-    }
-  std::vector<int> group (n, -1), group_of_root (n, -1);
-  int groups = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    int& g = group_of_root[root (i)];
-    if (g < 0)
-      g = groups++;
-    group[i] = g;
-  }
-  return group;
 }
 
 /** The instances of `group` with the most observations, at most `count` of them, the one with
@@ -188,7 +153,7 @@ BoxTurnResolver::resolve (ObjectModels& models, std::size_t& turned) const
   std::vector<std::vector<int>> groups (models.size());
   bool any_split = false;
   for (std::size_t m = 0; m < models.size(); ++m) {
-    groups[m] = landmarkGroups (models[m]);
+    groups[m] = sharedLandmarkGroups (models[m]);
     any_split =
         any_split ||
         std::any_of (groups[m].begin(), groups[m].end(), [] (int g) { return g > 0; });

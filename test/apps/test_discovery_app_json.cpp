@@ -71,8 +71,14 @@ TEST (DiscoveryAppJson, DescribesTheTwoCopiesAsOneObjectWithTwoInstances)
   EXPECT_NE (json.find ("\"format\": \"mid-discovery-result\""), std::string::npos);
   EXPECT_NE (json.find ("\"version\": 1"), std::string::npos);
   EXPECT_NE (json.find ("\"objects\": 1, \"instances\": 2"), std::string::npos) << json;
-  // Two copies of one print: the verification confirms the cluster between them.
+  // Two copies of one print: the verification confirms the cluster between them, and their
+  // relative pose rests on the landmarks both observe (one group).
   EXPECT_NE (json.find ("\"rejected_clusters\": 0,"), std::string::npos) << json;
+  const std::regex group (R"("group": 0, "pose")");
+  EXPECT_EQ (std::distance (std::sregex_iterator (json.begin(), json.end(), group),
+                            std::sregex_iterator()),
+             2)
+      << json;
   std::vector<std::string> stages = mid::test::pipelineStages();
   stages.emplace_back ("total");
   for (const auto& stage : stages)

@@ -81,6 +81,33 @@ TEST (EvalApp, ScoresAPerfectAndAMissingResult)
   EXPECT_TRUE (std::filesystem::exists (folder.file ("report.md")));
 }
 
+TEST (EvalApp, SplitsThePairsByGroupsWhenTheResultGivesThem)
+{
+  const mid::test::TemporaryFolder folder;
+  const auto dataset = writeDataset (folder), results = folder.path() / "results";
+  std::filesystem::create_directories (results / "000000");
+  std::ofstream (dataset / "scenarios.json") << R"({"000000": "S_ez"})";
+  const std::string command =
+      std::string (MID_EVAL_APP) + " " + dataset.string() + " " + results.string();
+  std::ofstream (results / "000000" / "000000.json") << kPerfect;
+  const auto without = mid::test::runCommand (command);
+  ASSERT_EQ (without.exit_code, 0) << without.output;
+  EXPECT_EQ (without.output.find ("pairs in one group"), std::string::npos)
+      << without.output;
+
+  // The same instances, both in group 0: their one pair is counted within one group.
+  std::string grouped = kPerfect;
+  for (std::size_t at = grouped.find ("{\"pose\""); at != std::string::npos;
+       at = grouped.find ("{\"pose\"", at + 2))
+    grouped.insert (at + 1, "\"group\": 0, ");
+  std::ofstream (results / "000000" / "000000.json") << grouped;
+  const auto with = mid::test::runCommand (command);
+  ASSERT_EQ (with.exit_code, 0) << with.output;
+  EXPECT_NE (with.output.find ("pairs in one group"), std::string::npos) << with.output;
+  EXPECT_NE (with.output.find ("| S_ez       |     1 |"), std::string::npos)
+      << with.output;
+}
+
 TEST (EvalApp, RefusesUnusableFolders)
 {
   const mid::test::TemporaryFolder folder;

@@ -77,22 +77,29 @@ smallestShareOnOneBox (const mid::test::RenderedObjectsScene& scene,
 }
 
 /** Every pair of instances: their relative pose against the truth's (rotation in degrees,
-  * translation in metres at the first instance's model origin).
+  * translation in metres at the first instance's model origin). boxes[k] is the box instance
+  * instances[k] lies on; without `instances`, instance k's.
   */
 void
 expectRelativePosesMatch (const mid::test::RenderedObjectsScene& scene,
                           const mid::ObjectModel& model,
                           const std::vector<int>& boxes,
                           double max_degrees,
-                          double max_metres)
+                          double max_metres,
+                          std::vector<std::size_t> instances = {})
 {
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+  if (instances.empty())
+    for (std::size_t k = 0; k < boxes.size(); ++k)
+      instances.push_back (k);
+  ASSERT_EQ (instances.size(), boxes.size());
+  for (std::size_t a = 0; a < boxes.size(); ++a)
+    for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+      const std::size_t i = instances[a], j = instances[b];
       const Eigen::Matrix4f estimated =
           model.instances[j].pose * model.instances[i].pose.inverse();
       const Eigen::Matrix4f truth =
-          (scene.boxes[static_cast<std::size_t> (boxes[j])].pose *
-           scene.boxes[static_cast<std::size_t> (boxes[i])].pose.inverse())
+          (scene.boxes[static_cast<std::size_t> (boxes[b])].pose *
+           scene.boxes[static_cast<std::size_t> (boxes[a])].pose.inverse())
               .matrix()
               .cast<float>();
       // Compare where both move the first instance's model origin, and the rotations.
@@ -332,20 +339,40 @@ TEST (MultiInstanceDiscovery, MergesTheModelsOfCopiesOfOneSizeOnATable)
   ASSERT_TRUE (discovery.discover (result));
   ASSERT_EQ (result.models.size(), 2u);
 
-  const auto expectOneObjectOfAllFour = [&] (const mid::DiscoveryParameters&
-                                                 parameters) {
+  // Boxes 0 and 3 show the cookie print, 1 and 2 the juice print.
+  const auto printOf = [] (int box) { return box == 0 || box == 3 ? 0 : 1; };
+  const auto expectOneObjectOfAllFour = [&] (const mid::DiscoveryParameters& parameters,
+                                             bool pairs_by_print) {
     discovery.setParameters (parameters);
     ASSERT_TRUE (discovery.discover (result));
     ASSERT_EQ (result.models.size(), 1u);
-    const auto boxes = boxesOf (scene, result, result.models[0]);
+    const auto& model = result.models[0];
+    const auto boxes = boxesOf (scene, result, model);
     EXPECT_EQ (std::set<int> (boxes.begin(), boxes.end()), (std::set<int>{0, 1, 2, 3}));
     // The merged model's frame moved to its landmarks' new centroid: its box did too.
     expectBoxOnEveryCopy (scene, result, 0, Eigen::Vector3f (0.04f, 0.09f, 0.12f));
+    // The groups: only copies of one print share a group, and there their relative pose is
+    // the truth's (the box's size alone would leave it free up to the box's half turns).
+    const std::vector<int> groups = mid::sharedLandmarkGroups (model);
+    ASSERT_EQ (groups.size(), boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+        const bool same_print = printOf (boxes[i]) == printOf (boxes[j]);
+        if (!same_print) {
+          EXPECT_NE (groups[i], groups[j]) << "boxes " << boxes[i] << ", " << boxes[j];
+        }
+        else if (pairs_by_print) {
+          EXPECT_EQ (groups[i], groups[j]) << "boxes " << boxes[i] << ", " << boxes[j];
+        }
+        if (groups[i] == groups[j])
+          expectRelativePosesMatch (
+              scene, model, {boxes[i], boxes[j]}, 2.0, 0.005, {i, j});
+      }
   };
   mid::DiscoveryParameters merged = apart;
   merged.merge_by_size = true;
-  expectOneObjectOfAllFour (merged);
-  expectOneObjectOfAllFour (mid::DiscoveryParameters());
+  expectOneObjectOfAllFour (merged, true);
+  expectOneObjectOfAllFour (mid::DiscoveryParameters(), false);
 }
 
 TEST (MultiInstanceDiscovery, ReportsTheBoxEachObjectsCopiesOccupyOnTheTable)

@@ -286,6 +286,55 @@ TEST (ScoreSummary, CountsThePairsWhoseRotationIsWrongBeyondEachThreshold)
       << report;
 }
 
+TEST (ScoreSummary, SplitsThePairsByTheGroupsOfTheResult)
+{
+  // Four copies of a type that is symmetric under a half turn about model z. Copies 0 and 1
+  // are one group, found at their true poses; copies 2 and 3 another, both turned by the half
+  // turn (right among themselves, wrong against 0 and 1 but for the symmetry).
+  const auto f = frame ({{1, 0}, {1, 150}, {1, 300}, {1, 450}});
+  mid::evaluation::ObjectSymmetryTable symmetries;
+  symmetries[1].discrete.push_back (
+      Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  Eigen::Matrix4f half = Eigen::Matrix4f::Identity();
+  half.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisf (static_cast<float> (M_PI), Eigen::Vector3f::UnitZ())
+          .toRotationMatrix();
+  DetectionResult r;
+  r.objects.push_back ({{instance (0, 20, 0, truePose (f, 0)),
+                         instance (150, 20, 0, truePose (f, 1)),
+                         instance (300, 20, 0, truePose (f, 2) * half),
+                         instance (450, 20, 0, truePose (f, 3) * half)}});
+  const std::vector<int> groups = {0, 0, 1, 1};
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    r.objects.front().instances[i].group = groups[i];
+  const auto s = mid::evaluation::scoreFrame (f, r, 0.9, symmetries);
+  // Pairs in order (0,1) (0,2) (0,3) (1,2) (1,3) (2,3).
+  EXPECT_EQ (s.pair_groups, (std::vector<int>{1, 0, 0, 0, 0, 1}));
+  mid::evaluation::ScoreSummary summary;
+  summary.add (s, r);
+  const std::string report =
+      mid::evaluation::formatGroupPoseReport ({{"S_ez", summary}}, 45.0);
+  // Within: 2 pairs, both exact. Across: 4 pairs, all 180 deg off, none modulo the symmetry
+  // (0.0x deg: float poses).
+  EXPECT_NE (report.find (
+                 "| S_ez       |     2 |   0.00 |    0 (0.000) |     4 | 180.00 |    4 "
+                 "(1.000) |   0.0"),
+             std::string::npos)
+      << report;
+  EXPECT_NE (report.find (" |    0 (0.000) |\n| total"), std::string::npos) << report;
+
+  // A result without groups (the detect app's, an older discovery's) puts no pair in either.
+  for (auto& instance : r.objects.front().instances)
+    instance.group = -1;
+  const auto plain = mid::evaluation::scoreFrame (f, r, 0.9, symmetries);
+  EXPECT_EQ (plain.pair_groups, std::vector<int> (6, -1));
+  mid::evaluation::ScoreSummary without;
+  without.add (plain, r);
+  EXPECT_NE (mid::evaluation::formatGroupPoseReport ({{"S_ez", without}}, 45.0)
+                 .find ("| S_ez       |     0 |    nan |    0 (0.000) |     0 |"),
+             std::string::npos);
+}
+
 TEST (FrameScore, RotationErrorsModuloTheShapeForgiveItsSymmetries)
 {
   // Type 1 is a cylinder about model z; type 2 lists no symmetry. Of each, the second copy is

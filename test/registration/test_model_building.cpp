@@ -709,3 +709,28 @@ TEST (ModelFrame, AnInstanceOfKeypointsCarriesThemIntoTheModelFrame)
       diameter = std::max (diameter, (all[a] - all[b]).norm());
   EXPECT_NEAR (model.diameter, diameter, 1e-5f);
 }
+
+TEST (ModelFrame, CopiesThatShareLandmarksFormOneGroup)
+{
+  // Six landmarks; instances 0 and 2 share landmark 1, instance 3 shares landmark 4 with 2 (so
+  // 0, 2, 3 are one group through 2), instance 1 sees landmarks nobody else sees, instance 4
+  // sees nothing, and instance 5 observes a landmark the model does not have besides 5, which
+  // it shares with 1.
+  mid::ObjectModel model;
+  model.landmarks.resize (6);
+  const std::vector<std::vector<int>> observed = {
+      {0, 1}, {2, 3}, {1, 4}, {4}, {}, {9, -1, 5, 3}};
+  for (const auto& landmarks : observed) {
+    mid::ModelInstance instance;
+    instance.landmarks = landmarks;
+    instance.keypoints.assign (landmarks.size(), 0);
+    model.instances.push_back (instance);
+  }
+  EXPECT_EQ (mid::sharedLandmarkGroups (model), (std::vector<int>{0, 1, 0, 0, 2, 1}));
+
+  // Every copy linked: one group.
+  model.instances[4].landmarks = {0};
+  model.instances[5].landmarks = {4, 3};
+  EXPECT_EQ (mid::sharedLandmarkGroups (model), (std::vector<int> (6, 0)));
+  EXPECT_TRUE (mid::sharedLandmarkGroups (mid::ObjectModel()).empty());
+}

@@ -16,7 +16,8 @@ constexpr int DISCOVERY_JSON_VERSION = 1;
   *  "counts": {"keypoints", "matches", "triplets", "clusters", "objects", "instances"},
   *  "objects": [{"id", "landmarks", "diameter", "box" (null, or {"size" (edges ascending,
   *  metres), "copies" (how many measured copies agree on it), "pose" (4x4 row-major, box frame
-  *  to model frame)}: DiscoveryResult::model_sizes), "instances": [{"pose" (4x4 row-major,
+  *  to model frame)}: DiscoveryResult::model_sizes), "instances": [{"group" (the
+  *  instances of one group share landmarks: sharedLandmarkGroups()), "pose" (4x4 row-major,
   *  model to camera, metres), "keypoints" ([u, v] pixels), "bbox" ([u_min, v_min, u_max,
   *  v_max]), "rms_error"}]}]}.
   * \param[in] result the result

@@ -34,6 +34,10 @@ struct ScoreSummary
     * (FrameScore::symmetric_rotation_errors_deg), in the same order.
     */
   std::vector<double> symmetric_rotation_errors_deg;
+  /** \brief Whether each pair's instances are in one group (FrameScore::pair_groups), in the
+    * same order.
+    */
+  std::vector<int> pair_groups;
   /** \brief Time per frame, and of SIFT extraction alone (milliseconds), of the frames whose
     * result gives them (DetectionResult::total_ms, DetectionResult::features_ms).
     */
@@ -131,6 +135,20 @@ formatSharedSurfaceReport (const std::map<std::string, ScoreSummary>& scenarios,
 std::string
 formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
                        const std::vector<double>& thresholds_deg);
+
+/** \brief The same pairs split by the result's groups (FrameScore::pair_groups): per scenario
+  * and in total, the pairs whose instances are in one group (their relative pose rests on
+  * their print) with their median rotation error and how many are wrong by more than
+  * `threshold_deg`, then the same for the pairs across two groups (relative poses that rest on
+  * a box), there also modulo the shape's symmetries. Pairs without groups are left out. Tells
+  * whether the groups say which relative poses a picker can trust for the print side.
+  * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
+  * \param[in] threshold_deg the rotation error (degrees) above which a pair is counted wrong
+  * \return a Markdown table, one line per scenario and one for the total
+  */
+std::string
+formatGroupPoseReport (const std::map<std::string, ScoreSummary>& scenarios,
+                       double threshold_deg);
 
 /** \brief How well the objects' boxes (the result JSON's "box") give the products' sizes: per
   * scenario and in total, the valid objects (FrameScore::object_boxes), how many have a box,

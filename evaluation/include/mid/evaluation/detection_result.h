@@ -16,6 +16,10 @@ struct DetectedInstance
   Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
   /** \brief Pixel positions (u column, v row) of its keypoints. */
   std::vector<Eigen::Vector2f, Eigen::aligned_allocator<Eigen::Vector2f>> keypoints;
+  /** \brief Its "group": instances of one object in one group have relative poses that rest
+    * on their print (mid::sharedLandmarkGroups()); -1 when the result gives none.
+    */
+  int group = -1;
 
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
 };

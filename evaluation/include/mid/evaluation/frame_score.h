@@ -68,6 +68,11 @@ struct FrameScore
     * though wrong for the print; equal to rotation_errors_deg for a type without symmetries.
     */
   std::vector<double> symmetric_rotation_errors_deg;
+  /** \brief For the same pairs: 1 if the result puts both instances in one group
+    * (DetectedInstance::group: their relative pose rests on their print), 0 if in two, -1 if
+    * it gives no group to one of them.
+    */
+  std::vector<int> pair_groups;
   /** \brief Each valid object (one that took a repeated type), in the order of the result:
     * the type it took and its result's box (DetectedObject::box_size and box_copies), for
     * comparing the box with the type's true size.

@@ -116,6 +116,21 @@ observationProblem (const ObjectModel& model, std::size_t keypoints);
 std::string
 descriptorProblem (const ObjectModel& model);
 
+/** \brief For each instance of a model, the group of copies whose relative poses rest on
+  * their print (not in the paper): instances that observe a common landmark, directly or
+  * through other instances, are in one group. Within a group the relative poses come from
+  * keypoints matched on the same surface; between groups they come from something that cannot
+  * tell the faces of a box apart (the box a copy occupies on the table, SizeInstanceSearch and
+  * ModelSizeMerger), and are right up to the box's symmetries: a picker that needs the print
+  * side (a label, an opening) can trust it across one group only. Observations of landmarks
+  * the model does not have are ignored.
+  * \param[in] model the model
+  * \return one group number per instance, numbered 0, 1, ... in the order of each group's
+  * first instance (all 0 when every copy is linked by its print)
+  */
+std::vector<int>
+sharedLandmarkGroups (const ObjectModel& model);
+
 /** \brief Recompute an instance's rms_error from its observations (0 when it has none).
   * \param[in] model the model whose landmarks the instance observes
   * \param[in] keypoints the frame's keypoints the instance's indices refer to
