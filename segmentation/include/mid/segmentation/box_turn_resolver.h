@@ -21,9 +21,9 @@ namespace mid {
   * degrees (doc/benchmark.md, session 46). Where two such copies show a face in common, the
   * print tells the turn. For each model:
   *
-  * 1. its instances fall into groups that observe common landmarks (a landmark observed by two
-  *    instances links them); with one group, every relative pose rests on the print and
-  *    nothing is done;
+  * 1. its instances fall into groups that observe common landmarks (sharedLandmarkGroups(): a
+  *    landmark observed by two instances links them); with one group, every relative pose
+  *    rests on the print and nothing is done;
   * 2. the group with the most observations is the reference; the model's box (the size its
   *    measured copies agree on, measureModelSizes(), in the model frame) gives the turns: the
   *    proper rotations about the box's centre that map it onto itself (edges equal within the
