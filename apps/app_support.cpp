@@ -110,7 +110,7 @@ ResultFiles::write (const DiscoveryResult& result, const std::string& input_name
       return false;
   if (!json_path_.empty()) {
     std::ofstream json (json_temporary_);
-    json << formatDiscoveryJson (result, input_name);
+    json << formatDiscoveryJson (result, input_name, groups_);
     json.close();
     if (!json) {
       print_error ("Could not write '%s'.\n", json_path_.c_str());

@@ -92,6 +92,23 @@ public:
     return !io::StagedFiles().stage (path).empty();
   }
 
+  /** \brief Whether the result JSON gives each instance's "group" (formatDiscoveryJson();
+    * default true: discovery). The detect app sets false: its instances are each posed on the
+    * stored model by their own matches.
+    */
+  ///@{
+  void
+  setInstanceGroups (bool written)
+  {
+    groups_ = written;
+  }
+  bool
+  getInstanceGroups () const
+  {
+    return groups_;
+  }
+  ///@}
+
   /** \brief Write and commit everything; false after a one-line error. */
   bool
   write (const DiscoveryResult& result, const std::string& input_name);
@@ -101,6 +118,7 @@ private:
   std::string json_path_;
   std::string json_temporary_;
   std::string model_prefix_;
+  bool groups_ = true;
 };
 
 /** \brief Print the counts, objects and timings of a result. */

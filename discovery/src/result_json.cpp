@@ -28,13 +28,17 @@ quoted (const std::string& text)
   return out + "\"";
 }
 
+/** One instance; its group is left out when negative. */
 void
 writeInstance (std::ostringstream& out,
                const ModelInstance& instance,
                int group,
                const ImageKeypoints& image)
 {
-  out << "        {\"group\": " << group << ", \"pose\": ";
+  out << "        {";
+  if (group >= 0)
+    out << "\"group\": " << group << ", ";
+  out << "\"pose\": ";
   detail::writeJsonMatrix (out, instance.pose);
   out << ",\n         \"keypoints\": [";
   float u_min = std::numeric_limits<float>::max(), v_min = u_min;
@@ -59,7 +63,9 @@ writeInstance (std::ostringstream& out,
 } // namespace
 
 std::string
-formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
+formatDiscoveryJson (const DiscoveryResult& result,
+                     const std::string& input,
+                     bool groups)
 {
   std::size_t instances = 0;
   for (const auto& model : result.models)
@@ -86,9 +92,11 @@ formatDiscoveryJson (const DiscoveryResult& result, const std::string& input)
         << ",\n     \"box\": ";
     detail::writeJsonBox (out, modelBox (result, m), "\n             ");
     out << ",\n     \"instances\": [\n";
-    const std::vector<int> groups = sharedLandmarkGroups (model);
+    const std::vector<int> group_of =
+        groups ? sharedLandmarkGroups (model)
+               : std::vector<int> (model.instances.size(), -1);
     for (std::size_t i = 0; i < model.instances.size(); ++i) {
-      writeInstance (out, model.instances[i], groups[i], result.image_keypoints);
+      writeInstance (out, model.instances[i], group_of[i], result.image_keypoints);
       out << (i + 1 < model.instances.size() ? ",\n" : "\n");
     }
     out << "     ]}";

@@ -193,86 +193,90 @@ boxSizeRow (const std::string& name,
   return line + boxErrorColumns (errors) + boxErrorColumns (agreed_errors) + " |\n";
 }
 
+/** " | count above (share)": how many of the errors exceed the threshold. */
+std::string
+aboveColumn (const std::vector<double>& errors, double threshold_deg)
+{
+  const auto above =
+      std::count_if (errors.begin(), errors.end(), [threshold_deg] (double e) {
+        return e > threshold_deg;
+      });
+  char text[48];
+  std::snprintf (text,
+                 sizeof (text),
+                 " | %4td (%5.3f)",
+                 above,
+                 errors.empty() ? 0.0
+                                : static_cast<double> (above) /
+                                      static_cast<double> (errors.size()));
+  return text;
+}
+
+/** " | median": the median of the errors. */
+std::string
+medianColumn (const std::vector<double>& errors)
+{
+  char text[32];
+  std::snprintf (text, sizeof (text), " | %6.2f", median (errors));
+  return text;
+}
+
+/** " | count": how many values there are. */
+std::string
+countColumn (std::size_t count)
+{
+  char text[32];
+  std::snprintf (text, sizeof (text), " | %5zu", count);
+  return text;
+}
+
+/** "| name" padded to the first column's width. */
+std::string
+nameColumn (const std::string& name)
+{
+  char text[96];
+  std::snprintf (text, sizeof (text), "| %-10s", name.c_str());
+  return text;
+}
+
 std::string
 poseErrorRow (const std::string& name,
               const ScoreSummary& s,
               const std::vector<double>& thresholds_deg)
 {
   const std::vector<double>& errors = s.rotation_errors_deg;
-  char line[96];
-  std::snprintf (line,
-                 sizeof (line),
-                 "| %-10s | %5zu | %6.2f | %6.2f",
-                 name.c_str(),
-                 errors.size(),
-                 median (errors),
-                 median (s.translation_errors_mm));
-  std::string text = line;
+  std::string text = nameColumn (name) + countColumn (errors.size()) +
+                     medianColumn (errors) + medianColumn (s.translation_errors_mm);
   for (const auto* values : {&errors, &s.symmetric_rotation_errors_deg})
-    for (const double threshold : thresholds_deg) {
-      const auto above =
-          std::count_if (values->begin(), values->end(), [threshold] (double e) {
-            return e > threshold;
-          });
-      std::snprintf (line,
-                     sizeof (line),
-                     " | %4td (%5.3f)",
-                     above,
-                     values->empty() ? 0.0
-                                     : static_cast<double> (above) /
-                                           static_cast<double> (values->size()));
-      text += line;
-    }
+    for (const double threshold : thresholds_deg)
+      text += aboveColumn (*values, threshold);
   return text + " |\n";
 }
 
-/** " | count | median | above (share)" of the errors, without the count if `with_count` is
-  * false; for groupPoseRow().
+/** One row of formatGroupPoseReport(): the pairs within one group, those across groups (also
+  * modulo the shape's symmetries), and how many pairs have no groups.
   */
-std::string
-errorColumns (const std::vector<double>& errors, double threshold_deg, bool with_count)
-{
-  const auto above =
-      std::count_if (errors.begin(), errors.end(), [threshold_deg] (double e) {
-        return e > threshold_deg;
-      });
-  char text[64];
-  std::string columns;
-  if (with_count) {
-    std::snprintf (text, sizeof (text), " | %5zu", errors.size());
-    columns = text;
-  }
-  std::snprintf (text,
-                 sizeof (text),
-                 " | %6.2f | %4td (%5.3f)",
-                 median (errors),
-                 above,
-                 errors.empty() ? 0.0
-                                : static_cast<double> (above) /
-                                      static_cast<double> (errors.size()));
-  return columns + text;
-}
-
 std::string
 groupPoseRow (const std::string& name, const ScoreSummary& s, double threshold_deg)
 {
   std::vector<double> within, across, across_symmetric;
-  for (std::size_t p = 0;
-       p < s.pair_groups.size() && p < s.rotation_errors_deg.size() &&
-       p < s.symmetric_rotation_errors_deg.size();
-       ++p) {
+  std::size_t without = 0;
+  // The three vectors are appended together; at() makes a misalignment loud.
+  for (std::size_t p = 0; p < s.pair_groups.size(); ++p) {
     if (s.pair_groups[p] == 1)
-      within.push_back (s.rotation_errors_deg[p]);
+      within.push_back (s.rotation_errors_deg.at (p));
     else if (s.pair_groups[p] == 0) {
-      across.push_back (s.rotation_errors_deg[p]);
-      across_symmetric.push_back (s.symmetric_rotation_errors_deg[p]);
+      across.push_back (s.rotation_errors_deg.at (p));
+      across_symmetric.push_back (s.symmetric_rotation_errors_deg.at (p));
     }
+    else
+      ++without;
   }
-  char line[32];
-  std::snprintf (line, sizeof (line), "| %-10s", name.c_str());
-  return line + errorColumns (within, threshold_deg, true) +
-         errorColumns (across, threshold_deg, true) +
-         errorColumns (across_symmetric, threshold_deg, false) + " |\n";
+  return nameColumn (name) + countColumn (within.size()) + medianColumn (within) +
+         aboveColumn (within, threshold_deg) + countColumn (across.size()) +
+         medianColumn (across) + aboveColumn (across, threshold_deg) +
+         medianColumn (across_symmetric) +
+         aboveColumn (across_symmetric, threshold_deg) + countColumn (without) + " |\n";
 }
 
 } // namespace
@@ -401,8 +405,8 @@ formatGroupPoseReport (const std::map<std::string, ScoreSummary>& scenarios,
       sizeof (header),
       "| scenario   | pairs in one group | rot. err. deg (median) | rot. err. > %g "
       "deg | pairs across groups | rot. err. deg (median) | rot. err. > %g deg | "
-      "rot. err. deg mod. symmetry (median) | rot. err. > %g deg mod. symmetry "
-      "|\n|---|---|---|---|---|---|---|---|---|\n",
+      "rot. err. deg mod. symmetry (median) | rot. err. > %g deg mod. symmetry | "
+      "pairs without groups |\n|---|---|---|---|---|---|---|---|---|---|\n",
       threshold_deg,
       threshold_deg,
       threshold_deg);

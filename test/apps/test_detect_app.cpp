@@ -248,6 +248,8 @@ TEST (DetectApp, ReportsEachCopyOnce)
   std::set<int> cartons;
   std::size_t instances = 0;
   for (const auto& instance : result.at ("objects").at (0).at ("instances")) {
+    // Each detection rests on the model by its own matches: no discovery group.
+    EXPECT_FALSE (instance.contains ("group"));
     std::vector<Eigen::Vector2f> pixels;
     for (const auto& uv : instance.at ("keypoints"))
       pixels.emplace_back (uv.at (0).get<float>(), uv.at (1).get<float>());

@@ -63,6 +63,7 @@ TEST (EvaluationIO, ReadsBackTheResultJsonTheAppsWrite)
   result.image_keypoints = {{10.5f, 20.25f}, {30.0f, 40.0f}, {50.0f, 60.0f}};
   result.timing_ms = {{"features", 12.5}, {"total", 20.0}};
   mid::ObjectModel model;
+  model.landmarks.resize (3);
   mid::ModelInstance instance;
   instance.pose (0, 3) = 0.25f;
   instance.pose (1, 1) = -1.0f;
@@ -70,6 +71,11 @@ TEST (EvaluationIO, ReadsBackTheResultJsonTheAppsWrite)
   instance.landmarks = {0, 1};
   model.instances.push_back (instance);
   result.models.push_back (model);
+  // The second object's two instances share no landmark: two groups.
+  mid::ModelInstance apart = instance;
+  apart.keypoints = {1};
+  apart.landmarks = {2};
+  model.instances.push_back (apart);
   result.models.push_back (model);
   // The first object's box was measured on two copies, the second's not at all.
   mid::ModelSize box;
@@ -95,6 +101,17 @@ TEST (EvaluationIO, ReadsBackTheResultJsonTheAppsWrite)
   EXPECT_EQ (read.objects[0].instances[0].keypoints[1], Eigen::Vector2f (50.0f, 60.0f));
   EXPECT_DOUBLE_EQ (read.total_ms, 20.0);
   EXPECT_DOUBLE_EQ (read.features_ms, 12.5);
+  EXPECT_EQ (read.objects[0].instances[0].group, 0);
+  ASSERT_EQ (read.objects[1].instances.size(), 2u);
+  EXPECT_EQ (read.objects[1].instances[0].group, 0);
+  EXPECT_EQ (read.objects[1].instances[1].group, 1);
+  // Written without groups (the detect app), they read as none.
+  std::ofstream (folder.file ("detected.json"))
+      << mid::formatDiscoveryJson (result, "scene.pcd", false);
+  ASSERT_TRUE (
+      mid::evaluation::readDetectionResult (folder.file ("detected.json"), read));
+  ASSERT_EQ (read.objects.size(), 2u);
+  EXPECT_EQ (read.objects[1].instances[1].group, -1);
 
   std::ofstream (folder.file ("other.json"))
       << R"({"format": "mid-discovery-result", "version": 9})";

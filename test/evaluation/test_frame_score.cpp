@@ -321,18 +321,25 @@ TEST (ScoreSummary, SplitsThePairsByTheGroupsOfTheResult)
                  "(1.000) |   0.0"),
              std::string::npos)
       << report;
-  EXPECT_NE (report.find (" |    0 (0.000) |\n| total"), std::string::npos) << report;
+  EXPECT_NE (
+      report.find (" |    0 (0.000) |     0 |\n| total      |     2 |   0.00 |    0 "
+                   "(0.000) |     4 | 180.00 |    4 (1.000) |   0.0"),
+      std::string::npos)
+      << report;
 
-  // A result without groups (the detect app's, an older discovery's) puts no pair in either.
+  // A result without groups (the detect app's, an older discovery's) puts every pair in the
+  // last column.
   for (auto& instance : r.objects.front().instances)
     instance.group = -1;
   const auto plain = mid::evaluation::scoreFrame (f, r, 0.9, symmetries);
   EXPECT_EQ (plain.pair_groups, std::vector<int> (6, -1));
   mid::evaluation::ScoreSummary without;
   without.add (plain, r);
-  EXPECT_NE (mid::evaluation::formatGroupPoseReport ({{"S_ez", without}}, 45.0)
-                 .find ("| S_ez       |     0 |    nan |    0 (0.000) |     0 |"),
-             std::string::npos);
+  EXPECT_NE (
+      mid::evaluation::formatGroupPoseReport ({{"S_ez", without}}, 45.0)
+          .find ("| S_ez       |     0 |    nan |    0 (0.000) |     0 |    nan |    0 "
+                 "(0.000) |    nan |    0 (0.000) |     6 |"),
+      std::string::npos);
 }
 
 TEST (FrameScore, RotationErrorsModuloTheShapeForgiveItsSymmetries)

@@ -22,9 +22,14 @@ constexpr int DISCOVERY_JSON_VERSION = 1;
   *  v_max]), "rms_error"}]}]}.
   * \param[in] result the result
   * \param[in] input a description of the input (e.g. the file name), written as given
+  * \param[in] groups whether to write each instance's "group" (default); false for results
+  * whose instances are each posed on a stored model by their own matches (detection), where
+  * the landmarks two instances share say nothing about what their relative pose rests on
   * \return the JSON text, ending in a newline
   */
 std::string
-formatDiscoveryJson (const DiscoveryResult& result, const std::string& input);
+formatDiscoveryJson (const DiscoveryResult& result,
+                     const std::string& input,
+                     bool groups = true);
 
 } // namespace mid

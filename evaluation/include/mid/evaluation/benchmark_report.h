@@ -34,8 +34,8 @@ struct ScoreSummary
     * (FrameScore::symmetric_rotation_errors_deg), in the same order.
     */
   std::vector<double> symmetric_rotation_errors_deg;
-  /** \brief Whether each pair's instances are in one group (FrameScore::pair_groups), in the
-    * same order.
+  /** \brief For each of those pairs, FrameScore::pair_groups (1 in one group, 0 in two, -1
+    * without groups), in the same order.
     */
   std::vector<int> pair_groups;
   /** \brief Time per frame, and of SIFT extraction alone (milliseconds), of the frames whose
@@ -140,7 +140,8 @@ formatPoseErrorReport (const std::map<std::string, ScoreSummary>& scenarios,
   * and in total, the pairs whose instances are in one group (their relative pose rests on
   * their print) with their median rotation error and how many are wrong by more than
   * `threshold_deg`, then the same for the pairs across two groups (relative poses that rest on
-  * a box), there also modulo the shape's symmetries. Pairs without groups are left out. Tells
+  * a box), there also modulo the shape's symmetries, and last how many pairs have no groups
+  * (results of the detect app or from before the groups), which neither count holds. Tells
   * whether the groups say which relative poses a picker can trust for the print side.
   * \param[in] scenarios the summary of each scenario, by name; the total row sums them all
   * \param[in] threshold_deg the rotation error (degrees) above which a pair is counted wrong
