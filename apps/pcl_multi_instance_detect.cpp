@@ -253,8 +253,8 @@ main (int argc, char** argv)
     return 1;
   const double load_ms = watch.getTime();
   mid::apps::ResultFiles outputs;
-  outputs.setInstanceGroups (
-      false); // each instance rests on the model by its own matches
+  // Each instance rests on the model by its own matches: no discovery groups.
+  outputs.setInstanceGroups (false);
   if (!outputs.stage (options.json_path, "") || !options.pictures.stage (outputs) ||
       (!options.extend_path.empty() &&
        !mid::apps::ResultFiles::canStage (options.extend_path)))
