@@ -119,12 +119,13 @@ descriptorProblem (const ObjectModel& model);
 /** \brief For each instance of a model, the group of copies whose relative poses rest on
   * their print (not in the paper): instances that observe a common landmark, directly or
   * through other instances, are in one group. Within a group the relative poses come from
-  * keypoints matched on the same surface; between groups they come from something that cannot
-  * tell the faces of a box apart (the box a copy occupies on the table, SizeInstanceSearch and
-  * ModelSizeMerger), and are right up to the box's symmetries: a picker that needs the print
-  * side (a label, an opening) can trust it within one group only. Observations of landmarks
-  * the model does not have are ignored (no crash); steps that need valid observations check
-  * them with observationProblem() first.
+  * keypoints matched on the same surface (or on two that look alike: a product with one print
+  * layout on several sides can be matched across them); between groups from something that
+  * cannot tell the faces of a box apart (the box a copy occupies on the table,
+  * SizeInstanceSearch and ModelSizeMerger), and are right up to the box's symmetries: a picker
+  * that needs the print side (a label, an opening) can trust it within one group only.
+  * Observations of landmarks the model does not have are ignored (no crash); steps that need
+  * valid observations check them with observationProblem() first.
   * \param[in] model the model
   * \return one group number per instance, numbered 0, 1, ... in the order of each group's
   * first instance (all 0 when every copy is linked by its print)
