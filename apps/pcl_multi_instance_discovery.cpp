@@ -139,6 +139,14 @@ printHelp (const char* program)
   line ("-guided_corr C",
         "guided search: smallest grey-level correlation, each way",
         static_cast<double> (d.guided_min_correlation));
+  line (
+      "-guided_local_corr C",
+      "guided search: smallest grey-level correlation of one keypoint's neighbourhood",
+      static_cast<double> (d.guided_neighbourhood_correlation));
+  line ("-guided_disagree S",
+        "guided search: largest share of keypoint neighbourhoods below "
+        "-guided_local_corr",
+        static_cast<double> (d.guided_max_disagreeing));
   line ("-guided_hypotheses N",
         "guided search: seed matches tried per model",
         static_cast<double> (d.guided_hypotheses));
@@ -426,6 +434,8 @@ const mid::apps::OptionSpecs kOptions{{"-h", 0},
                                       {"-guided_desc_dist", 1},
                                       {"-guided_inliers", 1},
                                       {"-guided_corr", 1},
+                                      {"-guided_local_corr", 1},
+                                      {"-guided_disagree", 1},
                                       {"-guided_hypotheses", 1},
                                       {"-min_correlation", 1},
                                       {"-verify_radius", 1},
@@ -565,6 +575,9 @@ parseOptions (int argc, char** argv, Options& options)
       parseNumber (argc, argv, "-guided_desc_dist", p.guided_descriptor_distance) &&
       parseNumber (argc, argv, "-guided_inliers", p.guided_min_inliers) &&
       parseNumber (argc, argv, "-guided_corr", p.guided_min_correlation) &&
+      parseNumber (
+          argc, argv, "-guided_local_corr", p.guided_neighbourhood_correlation) &&
+      parseNumber (argc, argv, "-guided_disagree", p.guided_max_disagreeing) &&
       parseNumber (argc, argv, "-patch_radius", p.patch_radius) &&
       parseNumber (argc, argv, "-patch_inliers", p.patch_min_inliers) &&
       parseNumber (argc, argv, "-patch_corr", p.patch_min_correlation) &&

@@ -193,6 +193,15 @@ validateDiscoveryParameters (const DiscoveryParameters& p, std::string& problem)
              "guided_min_correlation",
              static_cast<double> (p.guided_min_correlation),
              "in [-1, 1]");
+  c.require (p.guided_neighbourhood_correlation >= -1.0f &&
+                 p.guided_neighbourhood_correlation <= 1.0f,
+             "guided_neighbourhood_correlation",
+             static_cast<double> (p.guided_neighbourhood_correlation),
+             "in [-1, 1]");
+  c.require (p.guided_max_disagreeing >= 0.0f && p.guided_max_disagreeing <= 1.0f,
+             "guided_max_disagreeing",
+             static_cast<double> (p.guided_max_disagreeing),
+             "in [0, 1]");
   c.require (p.guided_hypotheses >= 1,
              "guided_hypotheses",
              static_cast<double> (p.guided_hypotheses),

@@ -170,12 +170,16 @@ bool
 searchGuidedInstances (const DiscoveryParameters& p,
                        const KeypointSurface& surface,
                        DiscoveryResult& result,
-                       const std::vector<bool>& excluded)
+                       const std::vector<bool>& excluded,
+                       std::vector<ModelInstances>* unconfirmed)
 {
+  if (unconfirmed)
+    unconfirmed->assign (result.models.size(), {});
   if (!p.guided_search || !canSearchGuided (surface, result) || result.models.empty())
     return true;
   GuidedInstanceSearch search = makeGuidedSearch (p, surface, result);
-  for (auto& model : result.models) {
+  for (std::size_t m = 0; m < result.models.size(); ++m) {
+    ObjectModel& model = result.models[m];
     std::vector<bool> taken = excluded;
     taken.resize (result.keypoints->size(), false);
     markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
@@ -188,10 +192,12 @@ searchGuidedInstances (const DiscoveryParameters& p,
       copies.insert (copies.end(), other.instances.begin(), other.instances.end());
     search.setCandidates (candidates);
     search.setFoundInstances (copies);
-    ModelInstances found;
-    if (!search.search (model, found))
+    ModelInstances found, apart;
+    if (!search.search (model, found, apart))
       return false;
-    addFoundInstances (p, result, found, model);
+    if (unconfirmed)
+      (*unconfirmed)[m].swap (apart);
+    addFoundInstances (p, result, found, model, apart);
   }
   return true;
 }

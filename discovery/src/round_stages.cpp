@@ -123,6 +123,9 @@ discoverFromPatches (const DiscoveryParameters& p,
     search.setMinInliers (p.patch_min_inliers);
     search.setMinCorrelation (p.patch_min_correlation);
     search.setMaxHypotheses (p.patch_hypotheses);
+    // A patch is one copy's keypoints: what it finds joins it whatever its neighbourhoods
+    // say (asking them lost copies on the benchmark, doc/benchmark.md, session 59).
+    search.setMaxDisagreeingShare (1.0f);
     const std::size_t first_new = result.models.size();
     std::vector<bool> tried (keypoints.size(), false);
     for (std::size_t round = 0; round < p.max_patches; ++round) {

@@ -144,12 +144,16 @@ void
 addFoundInstances (const DiscoveryParameters& p,
                    const DiscoveryResult& result,
                    const ModelInstances& found,
-                   ObjectModel& model)
+                   ObjectModel& model,
+                   const ModelInstances& unconfirmed)
 {
   for (const auto& instance : found)
     addInstance (
         model, instance, *result.descriptors, p.duplicate_angle, p.duplicate_distance);
-  if (!found.empty())
+  for (const auto& copy : unconfirmed)
+    addInstanceOfKeypoints (
+        *result.keypoints, *result.descriptors, copy.keypoints, copy.pose, model);
+  if (!found.empty() || !unconfirmed.empty())
     refineModel (model, *result.keypoints, p.refinement_iterations);
 }
 
@@ -197,6 +201,8 @@ makeGuidedSearch (const DiscoveryParameters& p,
   search.setInlierThreshold (p.inlier_threshold);
   search.setMinInliers (p.guided_min_inliers);
   search.setMinCorrelation (p.guided_min_correlation);
+  search.setMinNeighbourhoodCorrelation (p.guided_neighbourhood_correlation);
+  search.setMaxDisagreeingShare (p.guided_max_disagreeing);
   search.setMaxChromaticityDifference (p.max_chromaticity_difference);
   search.setMaxVividChromaticityDifference (p.max_vivid_chromaticity_difference);
   search.setCorrelationRadius (p.verification_radius);

@@ -81,12 +81,16 @@ copiesLookApart (const DiscoveryParameters& p,
                  const KeypointSurface& surface,
                  const TripletCluster& link);
 
-/** Add the instances found of `model` to it (addInstance()), and refine it if there were any. */
+/** Add the instances found of `model` to it (addInstance()), and the unconfirmed copies
+  * (GuidedInstanceSearch::search()) with landmarks of their own (addInstanceOfKeypoints()), and
+  * refine it if there were any.
+  */
 void
 addFoundInstances (const DiscoveryParameters& p,
                    const DiscoveryResult& result,
                    const ModelInstances& found,
-                   ObjectModel& model);
+                   ObjectModel& model,
+                   const ModelInstances& unconfirmed = {});
 
 /** Marks the keypoints an instance observes, and those within `margin` of the box of its
   * model's landmarks placed by its pose (all of them where boxes overlap).

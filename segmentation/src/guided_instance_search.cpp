@@ -289,9 +289,14 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
       !(depth_tolerance_ > 0.0f) || !(correlation_radius_ > 0.0f) ||
       !(max_chromaticity_difference_ > 0.0f) ||
       !(max_vivid_chromaticity_difference_ > 0.0f) ||
-      !(min_correlation_ >= -1.0f && min_correlation_ <= 1.0f) || min_inliers_ < 3)
+      !(min_correlation_ >= -1.0f && min_correlation_ <= 1.0f) ||
+      !(min_neighbourhood_correlation_ >= -1.0f &&
+        min_neighbourhood_correlation_ <= 1.0f) ||
+      !(max_disagreeing_share_ >= 0.0f && max_disagreeing_share_ <= 1.0f) ||
+      min_inliers_ < 3)
     return "the distances, radii, tolerances and the chromaticity differences must be "
-           "positive, the correlation in [-1, 1] and the minimum inliers at least 3";
+           "positive, the correlations in [-1, 1], the share of disagreeing "
+           "neighbourhoods in [0, 1] and the minimum inliers at least 3";
   if (surface_.chromaticity &&
       surface_.chromaticity->size() != surface_.organized->size())
     return "the keypoint surface's chromaticity must be one per pixel";
@@ -323,9 +328,12 @@ GuidedInstanceSearch::inputProblem (const ObjectModel& model) const
 }
 
 bool
-GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) const
+GuidedInstanceSearch::search (const ObjectModel& model,
+                              ModelInstances& found,
+                              ModelInstances& unconfirmed) const
 {
   found.clear();
+  unconfirmed.clear();
   const std::string problem = inputProblem (model);
   if (!problem.empty()) {
     PCL_ERROR ("[mid::GuidedInstanceSearch::search] %s.\n", problem.c_str());
@@ -386,6 +394,7 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
   verification.setMinCorrelation (min_correlation_);
   verification.setMaxChromaticityDifference (max_chromaticity_difference_);
   verification.setMaxVividChromaticityDifference (max_vivid_chromaticity_difference_);
+  verification.setMinNeighbourhoodCorrelation (min_neighbourhood_correlation_);
   const LandmarkBox box = computeLandmarkBox (model);
   ModelInstances copies = found_instances_;
   std::vector<std::size_t> on;
@@ -460,6 +469,7 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
     const PhotometricVerification::Agreement agreement = verification.compare (link);
     if (!agreement.correlation_tested || verification.rejects (agreement))
       continue;
+    const bool confirmed = !disagreesLocally (agreement, max_disagreeing_share_);
     // The copy's keypoints leave the candidates: those matched, and those inside the
     // model's box placed there.
     const Eigen::Affine3f to_model (pose.inverse());
@@ -469,9 +479,16 @@ GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) c
     for (const auto& m : matches)
       frame.free[m.second] = false;
     copies.push_back (candidate);
-    found.push_back (std::move (candidate));
+    (confirmed ? found : unconfirmed).push_back (std::move (candidate));
   }
   return true;
+}
+
+bool
+GuidedInstanceSearch::search (const ObjectModel& model, ModelInstances& found) const
+{
+  ModelInstances unconfirmed;
+  return search (model, found, unconfirmed);
 }
 
 } // namespace mid

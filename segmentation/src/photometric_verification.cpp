@@ -15,6 +15,19 @@ namespace mid {
 
 namespace {
 
+/** Fewest pairs of one keypoint's neighbourhood that can tell on its own (of about 50 in
+  * its disc).
+  */
+constexpr double kNeighbourhoodPairs = 20.0;
+
+/** Least standard deviation (grey levels) of both sides of a neighbourhood that can tell
+  * on its own: print, not the noise of a uniform ground.
+  */
+constexpr double kNeighbourhoodContrast = 5.0;
+
+/** Fewest neighbourhoods, both ways together, whose share of disagreeing ones can reject. */
+constexpr std::size_t kMinNeighbourhoods = 4;
+
 /** How far a chromaticity (red and green shares) lies from grey: the sum of the three shares'
   * distances from a third (0 for grey, up to 4/3 for a pure primary).
   */
@@ -76,13 +89,15 @@ struct GreyPairs : detail::PairedSums
       vivid.add (a, b);
   }
 
-  /** True if both sides vary by more than one grey level (standard deviation): below that, a
-    * uniform surface (or a frame without colour) cannot tell one pose from another.
+  /** True if both sides vary by more than `grey_levels` (standard deviation; one by
+    * default): below that, a uniform surface (or a frame without colour) cannot tell one pose
+    * from another.
     */
   bool
-  contrasted () const
+  contrasted (double grey_levels = 1.0) const
   {
-    return n >= 2.0 && sxx - sx * sx / n > n && syy - sy * sy / n > n;
+    const double least = n * grey_levels * grey_levels;
+    return n >= 2.0 && sxx - sx * sx / n > least && syy - sy * sy / n > least;
   }
 
   /** Normalized cross-correlation; 0 without contrast. */
@@ -97,25 +112,53 @@ struct GreyPairs : detail::PairedSums
   }
 };
 
-/** The grey-level pairs of the surface around `keypoints` moved by `motion` (see
+/** How the surface around keypoints is paired with where a motion takes it. */
+struct PairSettings
+{
+  float radius;
+  float tolerance;
+  double vivid_saturation;
+  double min_neighbourhood_correlation;
+};
+
+/** The grey-level pairs of the surface around `keypoints` moved by `motion`, and how many
+  * keypoint neighbourhoods could tell on their own and disagree (see
   * PhotometricVerification).
   */
-GreyPairs
+struct MovedSurface
+{
+  GreyPairs pairs;
+  std::size_t neighbourhoods = 0;
+  std::size_t disagreeing = 0;
+
+  /** Count one keypoint's own pairs as a neighbourhood if they can tell. */
+  void
+  judge (const GreyPairs& own, double min_correlation)
+  {
+    if (own.n < kNeighbourhoodPairs || !own.contrasted (kNeighbourhoodContrast))
+      return;
+    ++neighbourhoods;
+    if (own.correlation() < min_correlation)
+      ++disagreeing;
+  }
+};
+
+MovedSurface
 movedSurfacePairs (const KeypointSurface& surface,
                    const FramePinhole& pinhole,
                    const pcl::Indices& keypoints,
                    const Eigen::Matrix4f& motion,
-                   float radius,
-                   float tolerance,
-                   double vivid_saturation)
+                   const PairSettings& settings)
 {
+  const float radius = settings.radius, tolerance = settings.tolerance;
   const pcl::PointCloud<pcl::PointXYZ>& cloud = *surface.organized;
   const std::vector<float>& grey = *surface.intensity;
   const auto width = static_cast<int> (cloud.width),
              height = static_cast<int> (cloud.height);
   const Eigen::Affine3f move (motion);
   const double focal = std::max (std::abs (pinhole.fx), std::abs (pinhole.fy));
-  GreyPairs pairs;
+  MovedSurface result;
+  GreyPairs& pairs = result.pairs;
   for (const pcl::index_t k : keypoints) {
     const pcl::index_t pixel = surface.keypoint_pixels[static_cast<std::size_t> (k)];
     const Eigen::Vector3f centre =
@@ -127,14 +170,15 @@ movedSurfacePairs (const KeypointSurface& surface,
         std::min (std::ceil (focal * radius / std::abs (centre.z())), 1000.0));
     const int step = std::max (1, reach / 4);
     const int u0 = pixel % width, v0 = pixel / width;
+    GreyPairs own; // this keypoint's grey levels alone
     for (int dv = -reach; dv <= reach; dv += step)
       for (int du = -reach; du <= reach; du += step) {
         const int u = u0 + du, v = v0 + dv;
         if (u < 0 || v < 0 || u >= width || v >= height)
           continue;
-        const std::size_t own =
+        const std::size_t own_pixel =
             static_cast<std::size_t> (v) * cloud.width + static_cast<std::size_t> (u);
-        const Eigen::Vector3f point = cloud[own].getVector3fMap();
+        const Eigen::Vector3f point = cloud[own_pixel].getVector3fMap();
         if (!point.allFinite() || (point - centre).norm() > radius)
           continue;
         const Eigen::Vector3f moved = move * point;
@@ -148,14 +192,16 @@ movedSurfacePairs (const KeypointSurface& surface,
         // looks down -z.
         if (!pcl::isXYZFinite (seen) || std::abs (seen.z - moved.z()) > tolerance)
           continue;
-        pairs.add (grey[own], grey[there]);
+        pairs.add (grey[own_pixel], grey[there]);
+        own.add (grey[own_pixel], grey[there]);
         if (surface.chromaticity)
-          pairs.addColours ((*surface.chromaticity)[own],
+          pairs.addColours ((*surface.chromaticity)[own_pixel],
                             (*surface.chromaticity)[there],
-                            vivid_saturation);
+                            settings.vivid_saturation);
       }
+    result.judge (own, settings.min_neighbourhood_correlation);
   }
-  return pairs;
+  return result;
 }
 
 /** True if every keypoint of the cluster's point sets is below `keypoints`. */
@@ -222,6 +268,14 @@ PhotometricVerification::inputProblem() const
            std::to_string (max_vivid_chromaticity_difference_) +
            ") must be positive and the minimum correlation (" +
            std::to_string (min_correlation_) + ") in [-1, 1]";
+  if (!(min_neighbourhood_correlation_ >= -1.0f) ||
+      !(min_neighbourhood_correlation_ <= 1.0f) || !(max_disagreeing_share_ >= 0.0f) ||
+      !(max_disagreeing_share_ <= 1.0f))
+    return "the minimum correlation of a neighbourhood (" +
+           std::to_string (min_neighbourhood_correlation_) +
+           ") must be in [-1, 1] and the largest share of disagreeing neighbourhoods "
+           "(" +
+           std::to_string (max_disagreeing_share_) + ") in [0, 1]";
   if (!(vivid_saturation_ > 0.0f) || !(vivid_saturation_ <= 4.0f / 3.0f))
     return "the saturation of a vivid colour must be in (0, 4/3] (got " +
            std::to_string (vivid_saturation_) + ")";
@@ -254,20 +308,24 @@ PhotometricVerification::compare (const TripletCluster& cluster) const
   if (!inputProblem().empty() ||
       !keypointsHavePixels (cluster, surface_.keypoint_pixels.size()))
     return agreement;
-  const GreyPairs forward = movedSurfacePairs (surface_,
-                                               pinhole_,
-                                               cluster.source_indices,
-                                               cluster.transformation,
-                                               radius_,
-                                               depth_tolerance_,
-                                               vivid_saturation_);
-  const GreyPairs backward = movedSurfacePairs (surface_,
-                                                pinhole_,
-                                                cluster.target_indices,
-                                                cluster.transformation.inverse(),
-                                                radius_,
-                                                depth_tolerance_,
-                                                vivid_saturation_);
+  const PairSettings settings{radius_,
+                              depth_tolerance_,
+                              static_cast<double> (vivid_saturation_),
+                              static_cast<double> (min_neighbourhood_correlation_)};
+  const MovedSurface moved_forward = movedSurfacePairs (
+      surface_, pinhole_, cluster.source_indices, cluster.transformation, settings);
+  const MovedSurface moved_backward =
+      movedSurfacePairs (surface_,
+                         pinhole_,
+                         cluster.target_indices,
+                         cluster.transformation.inverse(),
+                         settings);
+  const GreyPairs& forward = moved_forward.pairs;
+  const GreyPairs& backward = moved_backward.pairs;
+  agreement.neighbourhoods =
+      moved_forward.neighbourhoods + moved_backward.neighbourhoods;
+  agreement.disagreeing_neighbourhoods =
+      moved_forward.disagreeing + moved_backward.disagreeing;
   // At least one pair, so that a tested mean is one.
   const auto enough = static_cast<double> (std::max<std::size_t> (min_pairs_, 1));
   agreement.correlation = std::min (forward.correlation(), backward.correlation());
@@ -299,7 +357,17 @@ PhotometricVerification::rejects (const Agreement& agreement) const
               static_cast<double> (max_chromaticity_difference_)) ||
          (agreement.vivid_tested &&
           agreement.vivid_difference >
-              static_cast<double> (max_vivid_chromaticity_difference_));
+              static_cast<double> (max_vivid_chromaticity_difference_)) ||
+         disagreesLocally (agreement, max_disagreeing_share_);
+}
+
+bool
+disagreesLocally (const PhotometricVerification::Agreement& agreement, float max_share)
+{
+  return agreement.neighbourhoods >= kMinNeighbourhoods &&
+         static_cast<double> (agreement.disagreeing_neighbourhoods) >
+             static_cast<double> (max_share) *
+                 static_cast<double> (agreement.neighbourhoods);
 }
 
 double

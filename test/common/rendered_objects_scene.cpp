@@ -277,5 +277,34 @@ paintInkKeepingGreyLevels (const RenderedObjectsScene& scene,
   }
 }
 
+std::size_t
+mirrorPrintPart (RenderedObjectsScene& scene, int box, double x_from, double x_to)
+{
+  const auto& spec = scene.boxes.at (static_cast<std::size_t> (box));
+  const auto& camera = scene.frame.camera;
+  const Eigen::Isometry3d to_box = spec.pose.inverse();
+  const pcl::PointCloud<pcl::PointXYZRGBA> original = *scene.cloud;
+  std::size_t changed = 0;
+  for (const auto& [u, v] : boxPixels (scene, box)) {
+    auto& p = (*scene.cloud) (u, v);
+    Eigen::Vector3d q = to_box * p.getVector3fMap().cast<double>();
+    if (std::abs (q.z() + 0.5 * spec.size.z()) > 1e-3 || q.x() < x_from || q.x() > x_to)
+      continue;
+    q.x() = x_from + x_to - q.x();
+    const Eigen::Vector3d there = spec.pose * q;
+    const auto mu = std::lround (camera.fx * there.x() / there.z() + camera.cx),
+               mv = std::lround (camera.fy * there.y() / there.z() + camera.cy);
+    if (mu < 0 || mv < 0 || mu >= camera.width || mv >= camera.height)
+      continue;
+    const auto& mirrored =
+        original (static_cast<std::size_t> (mu), static_cast<std::size_t> (mv));
+    p.r = mirrored.r;
+    p.g = mirrored.g;
+    p.b = mirrored.b;
+    ++changed;
+  }
+  return changed;
+}
+
 } // namespace test
 } // namespace mid

@@ -126,5 +126,13 @@ paintInkKeepingGreyLevels (const RenderedObjectsScene& scene,
                            const Eigen::Vector3f& ink,
                            pcl::PointCloud<pcl::PointXYZRGB>& cloud);
 
+/** \brief Mirror the print of box `box`'s face towards the camera (outward normal -z) between
+  * x = `x_from` and x = `x_to` of the box's frame, about their middle, in the scene's own
+  * cloud: the same layout, inks and contrast, with another word in that part.
+  * \return the number of pixels changed
+  */
+std::size_t
+mirrorPrintPart (RenderedObjectsScene& scene, int box, double x_from, double x_to);
+
 } // namespace test
 } // namespace mid

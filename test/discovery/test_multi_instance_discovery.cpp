@@ -713,6 +713,14 @@ TEST (MultiInstanceDiscovery, RefusesBadInputAndParameters)
   refuses (prints, "support_print_min_share");
   prints.support_print_min_share = 1.5f;
   refuses (prints, "support_print_min_share");
+  mid::DiscoveryParameters local;
+  local.guided_max_disagreeing = 1.5f;
+  refuses (local, "guided_max_disagreeing");
+  local.guided_max_disagreeing = std::numeric_limits<float>::quiet_NaN();
+  refuses (local, "guided_max_disagreeing");
+  local = mid::DiscoveryParameters();
+  local.guided_neighbourhood_correlation = -1.5f;
+  refuses (local, "guided_neighbourhood_correlation");
 }
 
 TEST (MultiInstanceDiscovery, PclPeersGroupTheSameSelfMatches)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <pcl/common/io.h>
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <vector>
@@ -25,15 +26,26 @@ struct FourBoxes : mid::test::RenderedKeypoints
 {
   mid::ObjectModel model;
 
-  FourBoxes()
-  : RenderedKeypoints (mid::test::renderBoxes (
+  /** The scene, changed by `edit` (if given) before its keypoints are found. */
+  explicit FourBoxes (
+      const std::function<void (mid::test::RenderedObjectsScene&)>& edit = {})
+  : RenderedKeypoints (rendered (edit))
+  {
+    addTruthInstance (0, model);
+  }
+
+  static mid::test::RenderedObjectsScene
+  rendered (const std::function<void (mid::test::RenderedObjectsScene&)>& edit)
+  {
+    auto scene = mid::test::renderBoxes (
         {{kApplePrint, kPrintedBoxSize, boxPose (-0.12, -0.07, 0.8, 15.0)},
          {kApplePrint, kPrintedBoxSize, boxPose (0.11, -0.06, 0.84, 200.0, 20.0)},
          {kApplePrint, kPrintedBoxSize, boxPose (-0.1, 0.1, 0.82, -70.0)},
          {kSoyPrint, kPrintedBoxSize, boxPose (0.12, 0.11, 0.81, 30.0)}},
-        0.95))
-  {
-    addTruthInstance (0, model);
+        0.95);
+    if (edit)
+      edit (scene);
+    return scene;
   }
 
   /** A search over every keypoint off box 0. */
@@ -132,6 +144,42 @@ TEST (GuidedInstanceSearch, RefusesACopyInAnotherInkByTheVividColours)
   EXPECT_EQ (findOn (2, 2.0f), 1u);
 }
 
+TEST (GuidedInstanceSearch, RefusesACopyWithAnotherWordByItsNeighbourhoods)
+{
+  // Box 2 shows the print with a third of its face mirrored: the layout of the model's print
+  // with another word, as on two printed sides of one carton. Found as a copy by the
+  // correlation of all pairs, it is refused once few disagreeing neighbourhoods are allowed,
+  // or returned apart as unconfirmed; box 1, a true copy, is still found.
+  const FourBoxes boxes ([] (mid::test::RenderedObjectsScene& scene) {
+    ASSERT_GT (mid::test::mirrorPrintPart (scene, 2, 0.02, 0.06), 200u);
+  });
+  const auto findOn = [&] (int box, float max_share) {
+    auto search = boxes.search();
+    search.setCandidates (boxes.on ({-1, box}));
+    search.setMaxDisagreeingShare (max_share);
+    mid::ModelInstances found;
+    EXPECT_TRUE (search.search (boxes.model, found));
+    return found.size();
+  };
+  EXPECT_EQ (findOn (2, 1.0f), 1u);
+  EXPECT_EQ (findOn (2, 0.1f), 0u);
+  EXPECT_EQ (findOn (1, 0.1f), 1u);
+
+  auto search = boxes.search();
+  search.setMaxDisagreeingShare (0.1f);
+  mid::ModelInstances found, unconfirmed;
+  ASSERT_TRUE (search.search (boxes.model, found, unconfirmed));
+  ASSERT_EQ (found.size(), 1u);
+  EXPECT_EQ (boxes.boxOf (found.front().keypoints), 1);
+  ASSERT_EQ (unconfirmed.size(), 1u);
+  EXPECT_EQ (boxes.boxOf (unconfirmed.front().keypoints), 2);
+  EXPECT_GE (unconfirmed.front().keypoints.size(), 6u);
+  // The bad input clears both outputs.
+  search.setMaxDisagreeingShare (2.0f);
+  EXPECT_FALSE (search.search (boxes.model, found, unconfirmed));
+  EXPECT_TRUE (found.empty() && unconfirmed.empty());
+}
+
 TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
 {
   const FourBoxes boxes;
@@ -154,6 +202,12 @@ TEST (GuidedInstanceSearch, RefusesBadInputWithClearedOutput)
   search = boxes.search();
   search.setMinCorrelation (1.5f);
   EXPECT_TRUE (refused (search, boxes.model)) << "correlation above 1";
+  search = boxes.search();
+  search.setMaxDisagreeingShare (1.5f);
+  EXPECT_TRUE (refused (search, boxes.model)) << "a share above 1";
+  search = boxes.search();
+  search.setMinNeighbourhoodCorrelation (-2.0f);
+  EXPECT_TRUE (refused (search, boxes.model)) << "a neighbourhood correlation below -1";
   search = boxes.search();
   search.setMaxVividChromaticityDifference (0.0f);
   EXPECT_TRUE (refused (search, boxes.model)) << "no vivid colour difference allowed";

@@ -417,6 +417,51 @@ TEST (PhotometricVerification, RejectsTheSameLayoutInAnotherInkByTheVividColours
   EXPECT_FALSE (pale_check.rejects (pale_agreement));
 }
 
+TEST (PhotometricVerification, TellsAnotherWordInOneLayoutByItsNeighbourhoods)
+{
+  // Box 1 shows box 0's print with the right quarter of its face mirrored: one layout with
+  // another word. The correlation of all pairs keeps it; the neighbourhoods of the keypoints
+  // in that quarter, each on its own, do not correlate, and their share rejects it when asked
+  // to. The copy as printed has no such neighbourhood.
+  auto scene = threeBoxes();
+  const PrintedFaces printed (scene);
+  ASSERT_GT (mid::test::mirrorPrintPart (scene, 1, 0.03, 0.06), 200u);
+  const PrintedFaces reworded (scene);
+  const mid::TripletCluster copies = printed.cluster (0, 1);
+  mid::PhotometricVerification verification;
+  EXPECT_FLOAT_EQ (verification.getMaxDisagreeingShare(), 1.0f); // off by default
+
+  verification.setKeypointSurface (printed.surface);
+  const auto same = verification.compare (copies);
+  ASSERT_TRUE (same.correlation_tested);
+  EXPECT_GE (same.neighbourhoods, 16u); // of 12 keypoints each way
+  EXPECT_EQ (same.disagreeing_neighbourhoods, 0u);
+
+  verification.setKeypointSurface (reworded.surface);
+  const auto other = verification.compare (copies);
+  ASSERT_TRUE (other.correlation_tested);
+  EXPECT_GT (other.correlation, 0.6); // the guided search's minimum keeps it
+  EXPECT_EQ (other.neighbourhoods, same.neighbourhoods);
+  // The three keypoints in the mirrored quarter, each way.
+  EXPECT_GE (other.disagreeing_neighbourhoods, 4u);
+  EXPECT_LE (other.disagreeing_neighbourhoods, 6u);
+  EXPECT_FALSE (verification.rejects (other));
+
+  verification.setMaxDisagreeingShare (0.15f);
+  EXPECT_TRUE (verification.rejects (other));
+  EXPECT_FALSE (verification.rejects (same));
+  mid::TripletClusters verified;
+  ASSERT_TRUE (verification.filter ({copies}, verified));
+  EXPECT_TRUE (verified.empty());
+  verification.setKeypointSurface (printed.surface);
+  ASSERT_TRUE (verification.filter ({copies}, verified));
+  EXPECT_EQ (verified.size(), 1u);
+  // A neighbourhood correlation that nothing reaches makes every one disagree.
+  verification.setMinNeighbourhoodCorrelation (1.0f);
+  EXPECT_EQ (verification.compare (copies).disagreeing_neighbourhoods,
+             same.neighbourhoods);
+}
+
 TEST (PhotometricVerification, KeepsAClusterTheFrameCannotTell)
 {
   // No table: the pose from box 0 onto a box moved far out of the view lands on no surface,
@@ -466,6 +511,18 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   short_colour.chromaticity = std::make_shared<std::vector<mid::Chromaticity>> (
       100, mid::Chromaticity{0.3f, 0.3f});
   EXPECT_TRUE (refuses (short_colour));
+  for (const float share : {-0.1f, 1.1f}) {
+    mid::PhotometricVerification verification;
+    verification.setKeypointSurface (faces.surface);
+    verification.setMaxDisagreeingShare (share);
+    mid::TripletClusters verified = stale;
+    EXPECT_FALSE (verification.filter (clusters, verified)) << share;
+    EXPECT_TRUE (verified.empty());
+  }
+  mid::PhotometricVerification below_minus_one;
+  below_minus_one.setKeypointSurface (faces.surface);
+  below_minus_one.setMinNeighbourhoodCorrelation (-1.5f);
+  EXPECT_FALSE (below_minus_one.inputProblem().empty());
   mid::KeypointSurface few_pixels = faces.surface;
   few_pixels.keypoint_pixels.resize (12); // the clusters' box-1 keypoints have no pixel
   EXPECT_TRUE (refuses (few_pixels));

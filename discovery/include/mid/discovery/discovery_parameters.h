@@ -243,6 +243,14 @@ struct DiscoveryParameters
     * guided matches up to guided_descriptor_distance (> 0). Needs the organized colour frame
     * and the image keypoints (MultiInstanceDiscovery passes both). Chosen on the development
     * frames: instance F1 0.777 -> 0.786 (seed 3), 0.774 -> 0.780 (seed 2).
+    *
+    * A copy whose keypoint neighbourhoods disagree on their own (their grey-level correlation
+    * below guided_neighbourhood_correlation, in [-1, 1]) in a share above
+    * guided_max_disagreeing (in [0, 1]; 1: never) shows the layout of the model's print with
+    * other words, another printed side: it joins the model with landmarks of its own
+    * (GuidedInstanceSearch's unconfirmed copies), so that it shares no group with the copies
+    * whose pose rests on the print (not in the paper; doc/benchmark.md, session 59). The
+    * guided search of the patches keeps such copies as found.
     */
   ///@{
   bool guided_search = true;
@@ -250,6 +258,8 @@ struct DiscoveryParameters
   float guided_descriptor_distance = 500.0f;
   std::size_t guided_min_inliers = 6;
   float guided_min_correlation = 0.6f;
+  float guided_neighbourhood_correlation = 0.3f;
+  float guided_max_disagreeing = 0.3f;
   std::size_t guided_hypotheses = 500;
   ///@}
   /** \brief After the models from patches, the guided search once more (with the most similar

@@ -36,8 +36,9 @@ namespace mid {
   *    of one of the landmark's descriptors; the pose is refitted on those matches, and those
   *    within the inlier threshold must number at least the minimum.
   * 4. **Grey levels.** The surface around the instance's keypoints, moved by the refitted
-  *    motion, must correlate with the frame there, and back, and have its colours where the
-  *    keypoint surface holds them (PhotometricVerification).
+  *    motion, must correlate with the frame there, and back, have its colours where the
+  *    keypoint surface holds them, and not too many of its keypoint neighbourhoods may
+  *    disagree on their own (PhotometricVerification).
   *
   * Hypotheses are tried from the most similar pair of descriptors on; an accepted instance's
   * keypoints, and the candidates inside the model's box placed there, leave the candidates. A
@@ -269,6 +270,39 @@ public:
   }
   ///@}
 
+  /** \brief Smallest grey-level correlation of one keypoint's own neighbourhood that agrees
+    * (in [-1, 1], default 0.3; PhotometricVerification::setMinNeighbourhoodCorrelation()).
+    */
+  ///@{
+  void
+  setMinNeighbourhoodCorrelation (float correlation)
+  {
+    min_neighbourhood_correlation_ = correlation;
+  }
+  float
+  getMinNeighbourhoodCorrelation () const
+  {
+    return min_neighbourhood_correlation_;
+  }
+  ///@}
+
+  /** \brief Largest share of the keypoint neighbourhoods that disagree (in [0, 1], default 1:
+    * never rejects; PhotometricVerification::setMaxDisagreeingShare()): two printed sides of
+    * one layout, told apart by their words.
+    */
+  ///@{
+  void
+  setMaxDisagreeingShare (float share)
+  {
+    max_disagreeing_share_ = share;
+  }
+  float
+  getMaxDisagreeingShare () const
+  {
+    return max_disagreeing_share_;
+  }
+  ///@}
+
   /** \brief Radius of the grey-level comparison around each keypoint (metres, default
     * 0.015).
     */
@@ -305,9 +339,22 @@ public:
     * \param[in] model the model with at least one instance on the frame's keypoints
     * \param[out] found the new instances (pose model -> camera, keypoints and the landmarks
     * they observe), cleared on failure
+    * \param[out] unconfirmed the copies that pass every check but the share of disagreeing
+    * neighbourhoods (setMaxDisagreeingShare()), cleared on failure: the layout of the model's
+    * print with other words, another printed side of the object, so their pose rests on the
+    * layout alone, right at best up to a turn of the box. Their landmarks are those their
+    * keypoints matched, not what they show: a caller that keeps them gives their keypoints
+    * landmarks of their own (addInstanceOfKeypoints()). Their keypoints leave the candidates
+    * like those of the found instances.
     * \return false (with a PCL_ERROR) on missing or inconsistent input or a parameter out of
     * range
     */
+  bool
+  search (const ObjectModel& model,
+          ModelInstances& found,
+          ModelInstances& unconfirmed) const;
+
+  /** \brief The same without the unconfirmed copies: those are refused. */
   bool
   search (const ObjectModel& model, ModelInstances& found) const;
 
@@ -333,6 +380,8 @@ private:
   float min_correlation_ = 0.6f;
   float max_chromaticity_difference_ = 0.1f;
   float max_vivid_chromaticity_difference_ = 0.15f;
+  float min_neighbourhood_correlation_ = 0.3f;
+  float max_disagreeing_share_ = 1.0f;
   float correlation_radius_ = 0.015f;
   std::size_t max_hypotheses_ = 500;
 };

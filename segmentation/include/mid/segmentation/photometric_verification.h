@@ -170,6 +170,45 @@ public:
   }
   ///@}
 
+  /** \brief The smallest correlation of a keypoint's own neighbourhood that agrees (in
+    * [-1, 1], default 0.3; see setMaxDisagreeingShare()).
+    */
+  ///@{
+  void
+  setMinNeighbourhoodCorrelation (float correlation)
+  {
+    min_neighbourhood_correlation_ = correlation;
+  }
+  float
+  getMinNeighbourhoodCorrelation () const
+  {
+    return min_neighbourhood_correlation_;
+  }
+  ///@}
+
+  /** \brief The largest share of the keypoint neighbourhoods, both ways together, whose own
+    * correlation is below the neighbourhood minimum, in a kept cluster (in [0, 1]; default 1:
+    * never rejects). A neighbourhood counts where its own pairs (20 or more) vary by 5 grey
+    * levels or more on both sides, and the share decides from 4 such neighbourhoods on.
+    *
+    * The correlation of all pairs together is mostly the print's layout: two faces of one
+    * carton printed with the same band, rules and logo but other words correlate at 0.7 or
+    * more. Where the words lie, single neighbourhoods do not correlate, and their share
+    * tells the two faces apart (not in the paper).
+    */
+  ///@{
+  void
+  setMaxDisagreeingShare (float share)
+  {
+    max_disagreeing_share_ = share;
+  }
+  float
+  getMaxDisagreeingShare () const
+  {
+    return max_disagreeing_share_;
+  }
+  ///@}
+
   /** \brief Fewer pairs than this, either way, keep the cluster untested (default 30). */
   ///@{
   void
@@ -192,7 +231,8 @@ public:
     * keypoints (isValidKeypointSurface()), has no grey level per pixel (or a chromaticity
     * that is not one per pixel), if the frame has no projection (hasProjection()), or a
     * parameter is out of range (radius, tolerance and both chromaticity differences > 0,
-    * correlation in [-1, 1], vivid saturation in (0, 4/3])
+    * correlations in [-1, 1], vivid saturation in (0, 4/3], share of disagreeing
+    * neighbourhoods in [0, 1])
     */
   bool
   filter (const TripletClusters& clusters, TripletClusters& verified) const;
@@ -218,6 +258,12 @@ public:
       * of vivid pairs.
       */
     bool vivid_tested = false;
+    /** \brief The keypoint neighbourhoods, both ways, that can tell on their own (see
+      * setMaxDisagreeingShare()).
+      */
+    std::size_t neighbourhoods = 0;
+    /** \brief Of those, the ones whose own correlation is below the neighbourhood minimum. */
+    std::size_t disagreeing_neighbourhoods = 0;
   };
 
   /** \brief Compare the surface around a cluster's point sets with the frame where its pose
@@ -228,9 +274,9 @@ public:
   compare (const TripletCluster& cluster) const;
 
   /** \brief True if the agreement rules the pose out: a tested correlation below the
-    * minimum, or tested colours (all of them, or the vivid ones) that differ by more than
-    * their maximum. filter() keeps the
-    * clusters this does not reject.
+    * minimum, tested colours (all of them, or the vivid ones) that differ by more than
+    * their maximum, or more disagreeing neighbourhoods than their largest share. filter()
+    * keeps the clusters this does not reject.
     */
   bool
   rejects (const Agreement& agreement) const;
@@ -271,8 +317,18 @@ private:
   float max_chromaticity_difference_ = 0.1f;
   float max_vivid_chromaticity_difference_ = 0.15f;
   float vivid_saturation_ = 0.1f;
+  float min_neighbourhood_correlation_ = 0.3f;
+  float max_disagreeing_share_ = 1.0f;
   std::size_t min_pairs_ = 30;
 };
+
+/** \brief True if more than `max_share` of an agreement's keypoint neighbourhoods that can
+  * tell on their own disagree, from 4 such neighbourhoods on
+  * (PhotometricVerification::setMaxDisagreeingShare(), which rejects() applies): the layout of
+  * the print agrees, not its words.
+  */
+bool
+disagreesLocally (const PhotometricVerification::Agreement& agreement, float max_share);
 
 /** \brief The grey level (0.299 R + 0.587 G + 0.114 B, 0 to 255) of each point of a colour
   * frame, in its order: KeypointSurface::intensity for PhotometricVerification.
