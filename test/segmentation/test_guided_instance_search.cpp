@@ -48,6 +48,21 @@ struct FourBoxes : mid::test::RenderedKeypoints
     return scene;
   }
 
+  /** How many copies a search finds among the keypoints of box `box` and the table, set up
+    * by `configure`.
+    */
+  std::size_t
+  foundOn (int box,
+           const std::function<void (mid::GuidedInstanceSearch&)>& configure) const
+  {
+    auto searching = search();
+    searching.setCandidates (on ({-1, box}));
+    configure (searching);
+    mid::ModelInstances found;
+    EXPECT_TRUE (searching.search (model, found));
+    return found.size();
+  }
+
   /** A search over every keypoint off box 0. */
   mid::GuidedInstanceSearch
   search () const
@@ -131,13 +146,10 @@ TEST (GuidedInstanceSearch, RefusesACopyInAnotherInkByTheVividColours)
   painted.chromaticity = std::make_shared<const std::vector<mid::Chromaticity>> (
       mid::chromaticities (colour));
   const auto findOn = [&] (int box, float max_vivid_difference) {
-    auto search = boxes.search();
-    search.setKeypointSurface (painted);
-    search.setCandidates (boxes.on ({-1, box}));
-    search.setMaxVividChromaticityDifference (max_vivid_difference);
-    mid::ModelInstances found;
-    EXPECT_TRUE (search.search (boxes.model, found));
-    return found.size();
+    return boxes.foundOn (box, [&] (mid::GuidedInstanceSearch& search) {
+      search.setKeypointSurface (painted);
+      search.setMaxVividChromaticityDifference (max_vivid_difference);
+    });
   };
   EXPECT_EQ (findOn (1, 0.15f), 1u);
   EXPECT_EQ (findOn (2, 0.15f), 0u);
@@ -154,12 +166,9 @@ TEST (GuidedInstanceSearch, RefusesACopyWithAnotherWordByItsNeighbourhoods)
     ASSERT_GT (mid::test::mirrorPrintPart (scene, 2, 0.02, 0.06), 200u);
   });
   const auto findOn = [&] (int box, float max_share) {
-    auto search = boxes.search();
-    search.setCandidates (boxes.on ({-1, box}));
-    search.setMaxDisagreeingShare (max_share);
-    mid::ModelInstances found;
-    EXPECT_TRUE (search.search (boxes.model, found));
-    return found.size();
+    return boxes.foundOn (box, [max_share] (mid::GuidedInstanceSearch& search) {
+      search.setMaxDisagreeingShare (max_share);
+    });
   };
   EXPECT_EQ (findOn (2, 1.0f), 1u);
   EXPECT_EQ (findOn (2, 0.1f), 0u);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 
 namespace {
@@ -511,18 +512,6 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   short_colour.chromaticity = std::make_shared<std::vector<mid::Chromaticity>> (
       100, mid::Chromaticity{0.3f, 0.3f});
   EXPECT_TRUE (refuses (short_colour));
-  for (const float share : {-0.1f, 1.1f}) {
-    mid::PhotometricVerification verification;
-    verification.setKeypointSurface (faces.surface);
-    verification.setMaxDisagreeingShare (share);
-    mid::TripletClusters verified = stale;
-    EXPECT_FALSE (verification.filter (clusters, verified)) << share;
-    EXPECT_TRUE (verified.empty());
-  }
-  mid::PhotometricVerification below_minus_one;
-  below_minus_one.setKeypointSurface (faces.surface);
-  below_minus_one.setMinNeighbourhoodCorrelation (-1.5f);
-  EXPECT_FALSE (below_minus_one.inputProblem().empty());
   mid::KeypointSurface few_pixels = faces.surface;
   few_pixels.keypoint_pixels.resize (12); // the clusters' box-1 keypoints have no pixel
   EXPECT_TRUE (refuses (few_pixels));
@@ -548,25 +537,33 @@ TEST (PhotometricVerification, RefusesBadInputWithClearedOutput)
   EXPECT_TRUE (refuses (faces.surface, 0.015f, 0.4f, 0.0f));
   EXPECT_TRUE (refuses (faces.surface, NAN));
   EXPECT_FALSE (refuses (faces.surface));
+  // One parameter out of range, the others at their defaults.
+  using Setting = std::function<void (mid::PhotometricVerification&)>;
+  const auto refusesSetting = [&] (const Setting& set) {
+    mid::PhotometricVerification verification;
+    verification.setKeypointSurface (faces.surface);
+    set (verification);
+    mid::TripletClusters verified = stale;
+    return !verification.filter (clusters, verified) && verified.empty();
+  };
   for (const float chroma : {0.0f, float (NAN)}) {
-    mid::PhotometricVerification verification;
-    verification.setKeypointSurface (faces.surface);
-    verification.setMaxChromaticityDifference (chroma);
-    mid::TripletClusters verified = stale;
-    EXPECT_FALSE (verification.filter (clusters, verified));
-    EXPECT_TRUE (verified.empty());
-    verification.setMaxChromaticityDifference (0.1f);
-    verification.setMaxVividChromaticityDifference (chroma);
-    verified = stale;
-    EXPECT_FALSE (verification.filter (clusters, verified));
-    EXPECT_TRUE (verified.empty());
+    EXPECT_TRUE (refusesSetting ([chroma] (auto& v) {
+      v.setMaxChromaticityDifference (chroma);
+    })) << chroma;
+    EXPECT_TRUE (refusesSetting ([chroma] (auto& v) {
+      v.setMaxVividChromaticityDifference (chroma);
+    })) << chroma;
   }
-  for (const float saturation : {0.0f, 1.5f, float (NAN)}) {
-    mid::PhotometricVerification verification;
-    verification.setKeypointSurface (faces.surface);
-    verification.setVividSaturation (saturation);
-    mid::TripletClusters verified = stale;
-    EXPECT_FALSE (verification.filter (clusters, verified)) << saturation;
-    EXPECT_TRUE (verified.empty());
-  }
+  for (const float saturation : {0.0f, 1.5f, float (NAN)})
+    EXPECT_TRUE (refusesSetting ([saturation] (auto& v) {
+      v.setVividSaturation (saturation);
+    })) << saturation;
+  for (const float share : {-0.1f, 1.1f, float (NAN)})
+    EXPECT_TRUE (refusesSetting ([share] (auto& v) {
+      v.setMaxDisagreeingShare (share);
+    })) << share;
+  for (const float correlation : {-1.5f, 1.5f, float (NAN)})
+    EXPECT_TRUE (refusesSetting ([correlation] (auto& v) {
+      v.setMinNeighbourhoodCorrelation (correlation);
+    })) << correlation;
 }
