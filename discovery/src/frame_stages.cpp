@@ -204,20 +204,9 @@ searchFromBoxes (const DiscoveryParameters& p,
                       extender.getPlaneTolerance();
       DiscoveryParameters search = p;
       search.guided_hypotheses = p.box_search_hypotheses;
-      // The unconfirmed copies get landmarks of their own after the retraction, which
-      // knows only the extension's.
-      std::vector<ModelInstances> unconfirmed;
-      if (!searchGuidedInstances (
-              search, keypoint_surface, result, on_table, &unconfirmed) ||
+      if (!searchGuidedInstances (search, keypoint_surface, result, on_table) ||
           !retractModelExtension (extension, result.models))
         return false;
-      for (std::size_t m = 0; m < result.models.size(); ++m)
-        for (const auto& copy : unconfirmed[m])
-          addInstanceOfKeypoints (*result.keypoints,
-                                  *result.descriptors,
-                                  copy.keypoints,
-                                  copy.pose,
-                                  result.models[m]);
       // The search refined the models with the added observations in.
       for (auto& model : result.models)
         for (auto& instance : model.instances)

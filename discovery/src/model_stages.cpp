@@ -170,16 +170,12 @@ bool
 searchGuidedInstances (const DiscoveryParameters& p,
                        const KeypointSurface& surface,
                        DiscoveryResult& result,
-                       const std::vector<bool>& excluded,
-                       std::vector<ModelInstances>* unconfirmed)
+                       const std::vector<bool>& excluded)
 {
-  if (unconfirmed)
-    unconfirmed->assign (result.models.size(), {});
   if (!p.guided_search || !canSearchGuided (surface, result) || result.models.empty())
     return true;
   GuidedInstanceSearch search = makeGuidedSearch (p, surface, result);
-  for (std::size_t m = 0; m < result.models.size(); ++m) {
-    ObjectModel& model = result.models[m];
+  for (auto& model : result.models) {
     std::vector<bool> taken = excluded;
     taken.resize (result.keypoints->size(), false);
     markInstances (*result.keypoints, result.models, p.leftover_margin, taken);
@@ -192,12 +188,10 @@ searchGuidedInstances (const DiscoveryParameters& p,
       copies.insert (copies.end(), other.instances.begin(), other.instances.end());
     search.setCandidates (candidates);
     search.setFoundInstances (copies);
-    ModelInstances found, apart;
-    if (!search.search (model, found, apart))
+    ModelInstances found, unconfirmed;
+    if (!search.search (model, found, unconfirmed))
       return false;
-    if (unconfirmed)
-      (*unconfirmed)[m].swap (apart);
-    addFoundInstances (p, result, found, model, apart);
+    addFoundInstances (p, result, found, model, unconfirmed);
   }
   return true;
 }

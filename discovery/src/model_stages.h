@@ -34,16 +34,14 @@ detectAdditionalInstances (const DiscoveryParameters& p,
   * (DiscoveryParameters::guided_search) among the keypoints outside every instance's box and
   * not `excluded` (one flag per keypoint, or empty), when the frame, its grey levels and the
   * image keypoints are known. The copies whose neighbourhoods disagree
-  * (DiscoveryParameters::guided_max_disagreeing) join with landmarks of their own, or, with
-  * `unconfirmed` given, are returned there instead, one list per model (for a caller that
-  * extended the models for the search and retracts that first).
+  * (DiscoveryParameters::guided_max_disagreeing) join with landmarks of their own (which a
+  * retraction of the box search's extension keeps, as a new copy observes them).
   */
 bool
 searchGuidedInstances (const DiscoveryParameters& p,
                        const KeypointSurface& surface,
                        DiscoveryResult& result,
-                       const std::vector<bool>& excluded = {},
-                       std::vector<ModelInstances>* unconfirmed = nullptr);
+                       const std::vector<bool>& excluded = {});
 
 /** Split each model whose instances fall into groups that do not look alike
   * (DiscoveryParameters::split_by_appearance), when the frame, its grey levels and the image

@@ -358,7 +358,8 @@ PhotometricVerification::rejects (const Agreement& agreement) const
          (agreement.vivid_tested &&
           agreement.vivid_difference >
               static_cast<double> (max_vivid_chromaticity_difference_)) ||
-         disagreesLocally (agreement, max_disagreeing_share_);
+         (agreement.correlation_tested &&
+          disagreesLocally (agreement, max_disagreeing_share_));
 }
 
 bool

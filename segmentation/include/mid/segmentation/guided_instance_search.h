@@ -37,8 +37,9 @@ namespace mid {
   *    within the inlier threshold must number at least the minimum.
   * 4. **Grey levels.** The surface around the instance's keypoints, moved by the refitted
   *    motion, must correlate with the frame there, and back, have its colours where the
-  *    keypoint surface holds them, and not too many of its keypoint neighbourhoods may
-  *    disagree on their own (PhotometricVerification).
+  *    keypoint surface holds them (PhotometricVerification). A copy of which too many keypoint
+  *    neighbourhoods disagree on their own is unconfirmed: returned apart by search() with
+  *    three outputs, dropped by the other.
   *
   * Hypotheses are tried from the most similar pair of descriptors on; an accepted instance's
   * keypoints, and the candidates inside the model's box placed there, leave the candidates. A
@@ -354,7 +355,9 @@ public:
           ModelInstances& found,
           ModelInstances& unconfirmed) const;
 
-  /** \brief The same without the unconfirmed copies: those are refused. */
+  /** \brief The same without the unconfirmed copies: those are dropped (their keypoints still
+    * leave the candidates, as they are copies of something).
+    */
   bool
   search (const ObjectModel& model, ModelInstances& found) const;
 

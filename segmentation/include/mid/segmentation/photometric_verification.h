@@ -54,6 +54,11 @@ namespace mid {
   * the real frames of doc/benchmark.md, where 0.10 loses coffee cups and a marker) is
   * rejected too (not in the paper).
   *
+  * The pooled correlation is mostly a print's layout: two printed sides of one carton with
+  * one layout and other words pass it. Each keypoint's neighbourhood also gives a
+  * correlation of its own, and a pose where too large a share of them disagree can be
+  * rejected too (setMaxDisagreeingShare(); off by default).
+  *
   * The camera need not be given: unless the keypoint surface holds the projection
   * (KeypointSurface::pinhole), it is fitted to the organized frame (fitFramePinhole()).
   */
@@ -188,13 +193,14 @@ public:
 
   /** \brief The largest share of the keypoint neighbourhoods, both ways together, whose own
     * correlation is below the neighbourhood minimum, in a kept cluster (in [0, 1]; default 1:
-    * never rejects). A neighbourhood counts where its own pairs (20 or more) vary by 5 grey
-    * levels or more on both sides, and the share decides from 4 such neighbourhoods on.
+    * never rejects). A neighbourhood counts where its own pairs (20 or more) vary by more than
+    * 5 grey levels on both sides, and the share decides from 4 such neighbourhoods on.
     *
     * The correlation of all pairs together is mostly the print's layout: two faces of one
-    * carton printed with the same band, rules and logo but other words correlate at 0.7 or
-    * more. Where the words lie, single neighbourhoods do not correlate, and their share
-    * tells the two faces apart (not in the paper).
+    * carton printed with the same band, rules and logo but other words correlate at 0.6 to
+    * 0.8. Where the words lie, single neighbourhoods do not correlate, and their share tells
+    * the two faces apart (not in the paper). Asked only where the correlation of all pairs was
+    * tested.
     */
   ///@{
   void
@@ -325,7 +331,7 @@ private:
 /** \brief True if more than `max_share` of an agreement's keypoint neighbourhoods that can
   * tell on their own disagree, from 4 such neighbourhoods on
   * (PhotometricVerification::setMaxDisagreeingShare(), which rejects() applies): the layout of
-  * the print agrees, not its words.
+  * the print agrees, not its words. No check of its own: a NaN share never rejects.
   */
 bool
 disagreesLocally (const PhotometricVerification::Agreement& agreement, float max_share);
